@@ -1,0 +1,27 @@
+// Case sets: the line cases of DESIGN.md section 2 reduced to what training and evaluation use.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/line_case.h"
+#include "core/parallel.h"
+
+namespace rsaa {
+
+struct CaseRecord {
+  Mask mask = 0;
+  double coverage = 0.0;
+  std::uint16_t neighbourhood = 0;  // Neighbourhood3x3::binary_code()
+  std::uint8_t line_count = 1;
+};
+
+CaseRecord make_case_record(const LineCase& line_case, const SamplePattern& pattern);
+
+// Cases 0 .. count-1 of `seed` (half one-line, half two-line, alternating), generated on
+// `threads` threads; identical for any thread count.
+std::vector<CaseRecord> generate_cases(const SamplePattern& pattern, std::uint64_t count,
+                                       std::uint64_t seed, int threads = 0,
+                                       const ProgressFn& progress = nullptr);
+
+}  // namespace rsaa

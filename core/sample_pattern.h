@@ -1,0 +1,40 @@
+// Sample patterns: ordered subsample positions in pixel space (see conventions.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/mask.h"
+#include "core/vec2.h"
+
+namespace rsaa {
+
+struct SamplePattern {
+  std::string name;
+  std::vector<Vec2> positions;  // pixel space, y down; index i = mask bit i
+
+  int size() const { return static_cast<int>(positions.size()); }
+  Mask all_similar() const { return full_mask(size()); }
+  // Number of masks, i.e. entries of an offset table for this pattern (2^n).
+  std::size_t mask_count() const { return std::size_t{1} << positions.size(); }
+};
+
+// Names of the patterns with fixed positions (DESIGN.md section 1).
+const std::vector<std::string>& builtin_pattern_names();
+bool is_builtin_pattern(const std::string& name);
+// Throws std::invalid_argument naming the known patterns when `name` is not one of them.
+SamplePattern builtin_pattern(const std::string& name);
+
+// Validates and wraps positions given in pixel space. Throws std::invalid_argument when a
+// position is not finite, lies outside the pixel [-0.5, 0.5]^2, or the count is not 1..64.
+SamplePattern pattern_from_positions(const std::string& name, const std::vector<Vec2>& positions);
+
+// Positions as glGetMultisamplefv reports them (origin bottom-left, y up, in [0,1]^2).
+SamplePattern pattern_from_gl_positions(const std::string& name,
+                                        const std::vector<Vec2>& gl_positions);
+
+// Names a table may carry besides the built-ins: patterns whose positions come from the
+// table itself ("gl4x", read from the GL driver, and "custom-..." patterns).
+bool is_known_pattern_name(const std::string& name);
+
+}  // namespace rsaa

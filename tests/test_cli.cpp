@@ -1,0 +1,103 @@
+// The rsaa command line as a user runs it: outputs, determinism, and errors on bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/test_util.h"
+
+namespace rsaa {
+namespace {
+
+using test::run_rsaa;
+using test::TempDir;
+
+std::size_t file_count(const std::string& dir) {
+  return std::distance(std::filesystem::directory_iterator(dir),
+                       std::filesystem::directory_iterator());
+}
+
+TEST(Cli, HelpExitsZero) {
+  EXPECT_EQ(run_rsaa("--help").exit_code, 0);
+  const auto r = run_rsaa("train --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--two-line-weight"), std::string::npos);
+  EXPECT_NE(run_rsaa("").exit_code, 0);
+  EXPECT_NE(run_rsaa("frobnicate").exit_code, 0);
+}
+
+TEST(Cli, TrainIsByteIdenticalAcrossThreadCounts) {
+  TempDir a, b;
+  const std::string common = "train --pattern d3d8x --cases 20000 --seed 9 --quiet ";
+  const auto ra = run_rsaa(common + "--threads 1 --out-dir " + a.path());
+  const auto rb = run_rsaa(common + "--threads 2 --out-dir " + b.path());
+  ASSERT_EQ(ra.exit_code, 0) << ra.output;
+  ASSERT_EQ(rb.exit_code, 0) << rb.output;
+  EXPECT_NE(ra.output.find("explained by one line"), std::string::npos) << ra.output;
+  for (const char* ext : {".json", ".glsl", ".hlsl"}) {
+    const std::string fa = test::read_text(a.file(std::string("d3d8x") + ext));
+    EXPECT_FALSE(fa.empty());
+    EXPECT_TRUE(fa == test::read_text(b.file(std::string("d3d8x") + ext))) << ext;
+  }
+}
+
+TEST(Cli, TrainRejectsBadOptionsWithoutWritingAnything) {
+  TempDir dir;
+  const std::string out = " --out-dir " + dir.path();
+  struct Bad {
+    std::string args, message;
+  };
+  for (const Bad& bad : std::vector<Bad>{
+           {"train --pattern nope --cases 10", "unknown sample pattern 'nope'"},
+           {"train --pattern d3d8x --cases 0", "--cases"},
+           {"train --pattern d3d8x --cases ten", "--cases"},
+           {"train --pattern d3d8x --two-line-weight 2", "--two-line-weight"},
+           {"train --pattern d3d8x --fit best", "--fit"},
+           {"train --pattern custom-a --positions '0.1,0.2 0.9,0'", "sample 1"},
+           {"train --pattern custom-a --positions '0.1;0.2'", "not an x,y pair"},
+       }) {
+    const auto r = run_rsaa(bad.args + out);
+    EXPECT_NE(r.exit_code, 0) << bad.args;
+    EXPECT_NE(r.output.find(bad.message), std::string::npos) << bad.args << "\n" << r.output;
+  }
+  EXPECT_EQ(file_count(dir.path()), 0u);
+  const auto r = run_rsaa("train --pattern d3d4x --cases 10 --out-dir /nonexistent");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("/nonexistent"), std::string::npos) << r.output;
+}
+
+TEST(Cli, TrainAcceptsPositions) {
+  TempDir dir;
+  const auto r = run_rsaa("train --pattern custom-diag --positions '-0.25,-0.25 0.25,0.25' "
+                          "--cases 2000 --quiet --out-dir " + dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(run_rsaa("eval-table --cases 2000 " + dir.file("custom-diag.json")).exit_code, 0);
+}
+
+TEST(Cli, EvalTableJsonAndErrors) {
+  TempDir dir;
+  ASSERT_EQ(run_rsaa("train --pattern d3d4x --cases 4000 --quiet --out-dir " + dir.path()).exit_code, 0);
+  const auto r = run_rsaa("eval-table --cases 4000 --seed 3 --json " + dir.file("d3d4x.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  EXPECT_EQ(j.at("cases"), 4000);
+  EXPECT_LT(j.at("results").at("mix").at("table").at("rms").get<double>(),
+            j.at("results").at("mix").at("zero_offset").at("rms").get<double>());
+
+  const std::string good = test::read_text(dir.file("d3d4x.json"));
+  test::write_text(dir.file("truncated.json"), good.substr(0, good.size() - 40));
+  test::write_text(dir.file("empty.json"), "");
+  std::string nan = good;
+  nan.replace(nan.find("\"offsets\": [\n    [") + 18, 1, "NaN, 0");
+  test::write_text(dir.file("nan.json"), nan);
+  for (const std::string name : {"truncated.json", "empty.json", "nan.json", "missing.json"}) {
+    const auto e = run_rsaa("eval-table " + dir.file(name));
+    EXPECT_NE(e.exit_code, 0) << name;
+    EXPECT_NE(e.output.find(dir.file(name)), std::string::npos) << e.output;
+    EXPECT_EQ(e.output.find("terminate"), std::string::npos) << e.output;
+  }
+}
+
+}  // namespace
+}  // namespace rsaa

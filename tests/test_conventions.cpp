@@ -1,0 +1,71 @@
+// The conventions of core/conventions.h and DESIGN.md section 1, checked once here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/conventions.h"
+#include "core/line_case.h"
+#include "core/mask.h"
+#include "core/sample_pattern.h"
+
+namespace rsaa {
+namespace {
+
+TEST(Conventions, BuiltinPatternsAreInSixteenthsWithYDown) {
+  const SamplePattern p8 = builtin_pattern("d3d8x");
+  ASSERT_EQ(p8.size(), 8);
+  EXPECT_EQ(p8.positions[0], (Vec2{1 / 16.0, -3 / 16.0}));
+  EXPECT_EQ(p8.positions[7], (Vec2{7 / 16.0, -7 / 16.0}));
+  EXPECT_EQ(builtin_pattern("d3d4x").positions[3], (Vec2{2 / 16.0, 6 / 16.0}));
+  const SamplePattern p16 = builtin_pattern("d3d16x");
+  ASSERT_EQ(p16.size(), 16);
+  EXPECT_EQ(p16.positions[15], (Vec2{-7 / 16.0, -8 / 16.0}));
+  EXPECT_EQ(p8.mask_count(), 256u);
+  EXPECT_THROW(builtin_pattern("d3d2x"), std::invalid_argument);
+}
+
+TEST(Conventions, PixelSpaceToGlFlipsYOnly) {
+  EXPECT_EQ(pixel_to_gl({0.25, 0.5}), (Vec2{0.25, -0.5}));
+  EXPECT_EQ(gl_to_pixel(pixel_to_gl({-0.3, 0.7})), (Vec2{-0.3, 0.7}));
+}
+
+TEST(Conventions, GlSamplePositionsMoveOriginToCentreAndFlipY) {
+  // glGetMultisamplefv: origin bottom-left, y up; (0.75, 0.25) is right of and BELOW the
+  // centre, which is +y in pixel space.
+  EXPECT_EQ(gl_sample_position_to_pixel({0.5, 0.5}), (Vec2{0.0, 0.0}));
+  EXPECT_EQ(gl_sample_position_to_pixel({0.75, 0.25}), (Vec2{0.25, 0.25}));
+  const SamplePattern p = pattern_from_gl_positions("gl4x", {{0.375, 0.125}, {0.875, 0.375}});
+  EXPECT_EQ(p.positions[0], (Vec2{-0.125, 0.375}));
+  EXPECT_EQ(p.positions[1], (Vec2{0.375, 0.125}));
+}
+
+TEST(Conventions, MaskBitIMeansSubsampleIIsSimilar) {
+  EXPECT_EQ(full_mask(8), 255u);
+  EXPECT_EQ(full_mask(64), ~Mask{0});
+  EXPECT_TRUE(is_similar(0b100, 2));
+  EXPECT_FALSE(is_similar(0b100, 1));
+  EXPECT_EQ(similar_count(0b1011), 3);
+
+  // A vertical line at x = 0.2: subsamples right of it (2 at x = 5/16, 7 at x = 7/16) differ.
+  LineCase vertical;
+  vertical.lines[0] = {{0.2, 0.0}, M_PI / 2};
+  EXPECT_EQ(vertical.mask(builtin_pattern("d3d8x")), 255u & ~((1u << 2) | (1u << 7)));
+  // A horizontal line at y = +0.2 lies BELOW the centre (y down): subsamples 4 (y = 5/16) and
+  // 6 (y = 7/16) differ.
+  LineCase horizontal;
+  horizontal.lines[0] = {{0.0, 0.2}, 0.0};
+  EXPECT_EQ(horizontal.mask(builtin_pattern("d3d8x")), 255u & ~((1u << 4) | (1u << 6)));
+}
+
+TEST(Conventions, PatternFromPositionsRejectsBadPositions) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(pattern_from_positions("custom-x", {}), std::invalid_argument);
+  EXPECT_THROW(pattern_from_positions("custom-x", {{0.6, 0.0}}), std::invalid_argument);
+  EXPECT_THROW(pattern_from_positions("custom-x", {{nan, 0.0}}), std::invalid_argument);
+  EXPECT_THROW(pattern_from_positions("custom-x", std::vector<Vec2>(65)), std::invalid_argument);
+  EXPECT_NO_THROW(pattern_from_positions("custom-x", {{0.5, -0.5}}));
+}
+
+}  // namespace
+}  // namespace rsaa

@@ -1,0 +1,58 @@
+// The CPU reference post-process on hand-made images whose results are known exactly.
+#include <gtest/gtest.h>
+
+#include "core/postprocess_cpu.h"
+
+namespace rsaa {
+namespace {
+
+Image two_colour_image() {
+  // 4 x 3; columns 0-1 red, 2-3 blue; row 2 is green (rows grow downwards).
+  Image img(4, 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 4; ++x)
+      img.at(x, y) = y == 2 ? Rgb{0, 1, 0} : x < 2 ? Rgb{1, 0, 0} : Rgb{0, 0, 1};
+  return img;
+}
+
+TEST(PostprocessCpu, OneFetchAtTheMaskOffset) {
+  const Image img = two_colour_image();
+  OffsetTable t = fallback_table(builtin_pattern("d3d4x"));
+  t.offsets[0b0101] = {0.5, 0.0};   // halfway to the right neighbour
+  t.offsets[0b0011] = {0.0, 0.25};  // a quarter towards the row below (+y down)
+  t.offsets[0b1000] = {1.0, -1.0};  // off the image: clamped to the edge
+  std::vector<Mask> masks(12, 0b1111);
+  masks[1 * 4 + 1] = 0b0101;
+  masks[1 * 4 + 0] = 0b0011;
+  masks[0 * 4 + 3] = 0b1000;
+  const Image out = apply_offset_table(img, masks, t);
+  EXPECT_FLOAT_EQ(out.at(1, 1).r, 0.5f);
+  EXPECT_FLOAT_EQ(out.at(1, 1).b, 0.5f);
+  EXPECT_FLOAT_EQ(out.at(0, 1).r, 0.75f);
+  EXPECT_FLOAT_EQ(out.at(0, 1).g, 0.25f);
+  EXPECT_FLOAT_EQ(out.at(3, 0).b, 1.0f);  // clamped: itself
+  // All-similar pixels are untouched.
+  EXPECT_FLOAT_EQ(out.at(2, 1).b, 1.0f);
+  EXPECT_FLOAT_EQ(out.at(0, 2).g, 1.0f);
+}
+
+TEST(PostprocessCpu, RejectsMismatchedMasks) {
+  const Image img = two_colour_image();
+  const OffsetTable t = fallback_table(builtin_pattern("d3d4x"));
+  EXPECT_THROW(apply_offset_table(img, std::vector<Mask>(11, 15), t), std::invalid_argument);
+  std::vector<Mask> masks(12, 15);
+  masks[5] = 16;  // a fifth subsample d3d4x does not have
+  EXPECT_THROW(apply_offset_table(img, masks, t), std::invalid_argument);
+}
+
+TEST(BilinearFetch, OneByOneImageAndExactCentres) {
+  Image one(1, 1);
+  one.at(0, 0) = {0.2f, 0.4f, 0.6f};
+  EXPECT_FLOAT_EQ(bilinear_fetch(one, 0.7, -0.9).g, 0.4f);
+  const Image img = two_colour_image();
+  EXPECT_FLOAT_EQ(bilinear_fetch(img, 2.0, 1.0).b, 1.0f);
+  EXPECT_FLOAT_EQ(bilinear_fetch(img, 1.5, 0.0).r, 0.5f);
+}
+
+}  // namespace
+}  // namespace rsaa

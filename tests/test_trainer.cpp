@@ -1,0 +1,125 @@
+// The trainer end to end: determinism, the masks one line can make, table structure, options.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "core/case_set.h"
+#include "core/table_accuracy.h"
+#include "trainer/train.h"
+
+namespace rsaa {
+namespace {
+
+TrainOptions options_for(const std::string& pattern, std::uint64_t cases) {
+  TrainOptions o;
+  o.pattern = builtin_pattern(pattern);
+  o.cases = cases;
+  return o;
+}
+
+TEST(Trainer, SameSeedGivesIdenticalFilesWhateverTheThreadCount) {
+  TrainOptions o = options_for("d3d8x", 30000);
+  o.threads = 1;
+  const OffsetTable one = train_offset_table(o).table;
+  o.threads = 2;
+  const OffsetTable two = train_offset_table(o).table;
+  o.threads = 5;
+  const OffsetTable five = train_offset_table(o).table;
+  EXPECT_EQ(offset_table_json(one), offset_table_json(two));
+  EXPECT_EQ(offset_table_json(one), offset_table_json(five));
+  EXPECT_EQ(offset_table_glsl(one), offset_table_glsl(two));
+  EXPECT_EQ(offset_table_hlsl(one), offset_table_hlsl(two));
+  o.seed = 2;
+  EXPECT_NE(offset_table_json(train_offset_table(o).table), offset_table_json(one));
+}
+
+// Every mask one line can make: lines just beside each line through two of the points
+// (subsamples and centre), turned and shifted a little either way.
+std::set<Mask> one_line_masks_by_enumeration(const SamplePattern& p) {
+  std::vector<Vec2> points = p.positions;
+  points.push_back({0.0, 0.0});
+  std::set<Mask> masks = {p.all_similar()};
+  for (std::size_t a = 0; a < points.size(); ++a)
+    for (std::size_t b = a + 1; b < points.size(); ++b) {
+      const Vec2 d = points[b] - points[a];
+      const double angle = std::atan2(d.y, d.x);
+      const Vec2 normal{-d.y / length(d), d.x / length(d)};
+      for (const Vec2 pivot : {points[a], points[b], 0.5 * (points[a] + points[b])})
+        for (double turn : {-1e-6, 0.0, 1e-6})
+          for (double shift : {-1e-7, 1e-7}) {
+            LineCase c;
+            c.lines[0] = {pivot + shift * normal, angle + turn};
+            if (c.lines[0].side({0, 0}) != 0.0) masks.insert(c.mask(p));
+          }
+    }
+  return masks;
+}
+
+TEST(Trainer, OneLineMasksAreExactlyThoseOneLineCanMake) {
+  const SamplePattern p = builtin_pattern("d3d8x");
+  const std::set<Mask> expected = one_line_masks_by_enumeration(p);
+  // 9 points in general position allow C(9,2) + 1 = 37 splits; the centre lies on the segment
+  // between subsamples 0 (1,-3) and 1 (-1,3), which removes two.
+  EXPECT_EQ(expected.size(), 35u);
+  std::set<Mask> found;
+  for (const CaseRecord& c : generate_cases(p, 1000000, 1))
+    if (c.line_count == 1) found.insert(c.mask);
+  EXPECT_EQ(found, expected);
+}
+
+TEST(Trainer, TableStructure) {
+  const TrainOptions o = options_for("d3d8x", 40000);
+  const TrainReport r = train_offset_table(o);
+  const OffsetTable& t = r.table;
+  ASSERT_EQ(t.offsets.size(), 256u);
+  EXPECT_EQ(t.offsets[255], (Vec2{0.0, 0.0}));
+  std::uint64_t total = 0;
+  for (std::size_t m = 0; m < 256; ++m) {
+    total += t.cases_per_mask[m];
+    EXPECT_EQ(t.sources[m] == OffsetSource::Fallback, t.cases_per_mask[m] == 0) << m;
+    EXPECT_LE(std::abs(t.offsets[m].x), 1.0);
+    EXPECT_LE(std::abs(t.offsets[m].y), 1.0);
+    EXPECT_EQ(std::round(t.offsets[m].x * 1e6) / 1e6, t.offsets[m].x);
+  }
+  EXPECT_EQ(total, 40000u);
+  EXPECT_EQ(r.masks_by_source[0] + r.masks_by_source[1] + r.masks_by_source[2], 256u);
+  EXPECT_EQ(t.training.at("command"),
+            "rsaa train --pattern d3d8x --cases 40000 --seed 1 --fit mixed --two-line-weight 0.5");
+}
+
+TEST(Trainer, SixteenSamplesFitsOnlyReachedMasks) {
+  const TrainReport r = train_offset_table(options_for("d3d16x", 20000));
+  EXPECT_EQ(r.table.offsets.size(), 65536u);
+  EXPECT_GT(r.masks_by_source[2], 60000u);  // most masks are never reached: fallback
+  EXPECT_GT(r.masks_by_source[0] + r.masks_by_source[1], 100u);
+}
+
+TEST(Trainer, RejectsBadOptions) {
+  TrainOptions o = options_for("d3d4x", 0);
+  EXPECT_THROW(train_offset_table(o), std::invalid_argument);
+  o.cases = 100;
+  o.two_line_weight = 1.5;
+  EXPECT_THROW(train_offset_table(o), std::invalid_argument);
+  o.two_line_weight = std::nan("");
+  EXPECT_THROW(train_offset_table(o), std::invalid_argument);
+  o.two_line_weight = 0.5;
+  o.pattern = pattern_from_positions("custom-17", std::vector<Vec2>(17));
+  EXPECT_THROW(train_offset_table(o), std::invalid_argument);
+}
+
+TEST(Trainer, MixedFitTradesALittleOneLineErrorForLessTwoLineError) {
+  // The measurement behind the default fit (README): held-out cases, seed 2.
+  TrainOptions o = options_for("d3d8x", 200000);
+  const auto held_out = generate_cases(o.pattern, 200000, 2);
+  o.fit = FitRule::Ockham;
+  const TableAccuracy ockham = evaluate_table(train_offset_table(o).table, held_out);
+  o.fit = FitRule::Mixed;
+  const TableAccuracy mixed = evaluate_table(train_offset_table(o).table, held_out);
+  EXPECT_LT(mixed.table[kTwoLine].rms, 0.95 * ockham.table[kTwoLine].rms);
+  EXPECT_LT(mixed.table[kMix].rms, ockham.table[kMix].rms);
+  EXPECT_GE(mixed.table[kOneLine].rms, ockham.table[kOneLine].rms);
+}
+
+}  // namespace
+}  // namespace rsaa

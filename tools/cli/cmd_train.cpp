@@ -1,0 +1,154 @@
+// rsaa train: fit an offset table and write tables/P.{json,glsl,hlsl}.
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "core/parallel.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/progress.h"
+#include "trainer/train.h"
+
+namespace rsaa::cli {
+namespace {
+
+struct TrainArgs {
+  std::string pattern;
+  std::string positions;
+  std::uint64_t cases = 1000000;
+  std::uint64_t seed = 1;
+  std::string out_dir = "tables";
+  std::string fit = "mixed";
+  double two_line_weight = 0.5;
+  int threads = 0;
+  bool quiet = false;
+};
+
+// "x,y x,y ..." in pixel space (y down).
+std::vector<Vec2> parse_positions(const std::string& text) {
+  std::vector<Vec2> out;
+  std::istringstream in(text);
+  std::string token;
+  while (in >> token) {
+    Vec2 p;
+    char comma = 0;
+    std::istringstream pair(token);
+    if (!(pair >> p.x >> comma >> p.y) || comma != ',' || !pair.eof())
+      throw std::invalid_argument("--positions: '" + token + "' is not an x,y pair");
+    out.push_back(p);
+  }
+  return out;
+}
+
+std::string rms_text(const ErrorStats& s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.5f", s.rms);
+  return s.count ? buffer : "-";
+}
+
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+int run_train(const TrainArgs& a) {
+  const auto start = std::chrono::steady_clock::now();
+  TrainOptions options;
+  if (a.positions.empty()) {
+    options.pattern = builtin_pattern(a.pattern);
+  } else {
+    if (a.pattern != "gl4x" && a.pattern.rfind("custom-", 0) != 0)
+      throw std::invalid_argument("--positions needs --pattern gl4x or --pattern custom-NAME");
+    options.pattern = pattern_from_positions(a.pattern, parse_positions(a.positions));
+  }
+  options.cases = a.cases;
+  options.seed = a.seed;
+  options.fit = a.fit == "ockham" ? FitRule::Ockham : FitRule::Mixed;
+  options.two_line_weight = a.two_line_weight;
+  options.threads = a.threads;
+  if (!std::filesystem::is_directory(a.out_dir))
+    throw std::invalid_argument("--out-dir: '" + a.out_dir + "' is not a directory");
+
+  const int threads = a.threads > 0 ? a.threads : default_thread_count();
+  std::printf("rsaa train: pattern %s (%d subsamples, %zu masks), %llu cases, seed %llu, fit %s",
+              options.pattern.name.c_str(), options.pattern.size(), options.pattern.mask_count(),
+              static_cast<unsigned long long>(a.cases), static_cast<unsigned long long>(a.seed),
+              a.fit.c_str());
+  if (options.fit == FitRule::Mixed) std::printf(" (two-line weight %g)", a.two_line_weight);
+  std::printf(", %d threads\n", threads);
+  std::fflush(stdout);
+
+  auto printer = std::make_shared<ProgressPrinter>(a.quiet);
+  TrainProgress progress;
+  progress.stage = [printer](const std::string& s) { printer->stage(s); };
+  progress.step = [printer](std::uint64_t d, std::uint64_t t) { printer->step(d, t); };
+  const TrainReport report = train_offset_table(options, progress);
+  const auto paths = write_offset_table_files(report.table, a.out_dir);
+  const double total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const auto& by = report.masks_by_source;
+  const auto& acc = report.training_accuracy;
+  std::printf("  cases:   %llu generated in %.2f s (%.0f cases/s)\n",
+              static_cast<unsigned long long>(a.cases), report.generate_seconds,
+              a.cases / std::max(report.generate_seconds, 1e-9));
+  std::printf("  fit:     %llu masks reached, fitted in %.2f s (the all-similar mask stays (0, 0))\n",
+              static_cast<unsigned long long>(by[0] + by[1]), report.fit_seconds);
+  std::printf("  masks:   %llu explained by one line, %llu only by two lines, %llu by no case "
+              "(fallback rule)\n",
+              static_cast<unsigned long long>(by[0]), static_cast<unsigned long long>(by[1]),
+              static_cast<unsigned long long>(by[2]));
+  std::printf("  training RMS error   %-10s %-10s %-10s\n", "one-line", "two-line", "mix");
+  for (int s = 0; s < 3; ++s) {
+    if (acc.by_source[s][kMix].count == 0) continue;
+    std::printf("    %-8s masks     %-10s %-10s %-10s\n", to_string(OffsetSource(s)),
+                rms_text(acc.by_source[s][kOneLine]).c_str(),
+                rms_text(acc.by_source[s][kTwoLine]).c_str(),
+                rms_text(acc.by_source[s][kMix]).c_str());
+  }
+  std::printf("    whole table        %-10.5f %-10.5f %-10.5f\n", acc.table[kOneLine].rms,
+              acc.table[kTwoLine].rms, acc.table[kMix].rms);
+  std::printf("  time:    %.2f s in all; peak memory %.0f MiB\n", total, peak_memory_mib());
+  for (const auto& p : paths) std::printf("  wrote   %s\n", p.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Action add_train_command(CLI::App& app) {
+  auto args = std::make_shared<TrainArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "train", "Fit one resampling offset per similarity mask on random line cases and write "
+               "DIR/P.json, DIR/P.glsl, DIR/P.hlsl");
+  cmd->add_option("--pattern", args->pattern,
+                  "Sample pattern: d3d4x, d3d8x, d3d16x; or gl4x / custom-NAME with --positions")
+      ->required();
+  cmd->add_option("--positions", args->positions,
+                  "Subsample positions in pixel space (+y down), \"x,y x,y ...\"");
+  cmd->add_option("--cases", args->cases, "Number of line cases, half one-line, half two-line")
+      ->capture_default_str()
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 32));
+  cmd->add_option("--seed", args->seed, "Random seed of the case set")->capture_default_str();
+  cmd->add_option("--out-dir", args->out_dir, "Directory for the three table files")
+      ->capture_default_str();
+  cmd->add_option("--fit", args->fit,
+                  "ockham: one-line cases where one line explains the mask, else two-line "
+                  "(the paper); mixed: both kinds, weighted")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ockham", "mixed"}));
+  cmd->add_option("--two-line-weight", args->two_line_weight,
+                  "Weight w of two-line cases in the mixed fit (one-line cases get 1 - w)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores; never changes output)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
+  return [args] { return run_train(*args); };
+}
+
+}  // namespace rsaa::cli

@@ -1,0 +1,80 @@
+// The trainer: line cases -> cases grouped by mask -> one fitted offset per mask -> a table.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/case_set.h"
+#include "core/offset_table.h"
+#include "core/parallel.h"
+#include "core/sample_pattern.h"
+#include "core/table_accuracy.h"
+#include "trainer/offset_fit.h"
+
+namespace rsaa {
+
+// Which cases a mask's offset is fitted on.
+//  ockham: the paper's rule. If a single line produces the mask, its one-line cases only;
+//          otherwise its two-line cases.
+//  mixed:  all cases of the mask, a one-line case weighted 2(1 - w), a two-line case 2w
+//          (w = two_line_weight). With the 50/50 training set, w = 0.5 minimises the expected
+//          error on the 50/50 mix; w -> 0 tends to ockham.
+enum class FitRule { Ockham, Mixed };
+const char* to_string(FitRule rule);
+
+struct TrainOptions {
+  SamplePattern pattern;
+  std::uint64_t cases = 1000000;
+  std::uint64_t seed = 1;
+  FitRule fit = FitRule::Mixed;
+  double two_line_weight = 0.5;
+  int threads = 0;  // 0 = all cores; never changes the result
+};
+
+// The command that reproduces a table, written into its header.
+std::string train_command(const TrainOptions& options);
+
+struct TrainProgress {
+  std::function<void(const std::string& stage)> stage;
+  ProgressFn step;
+};
+
+struct TrainReport {
+  OffsetTable table;
+  // Masks by rule: produced by one line / only by two lines / by no case (fallback).
+  std::array<std::uint64_t, 3> masks_by_source{};
+  double generate_seconds = 0.0;
+  double fit_seconds = 0.0;
+  TableAccuracy training_accuracy;  // the table on its own training cases
+};
+
+// The cases of one mask merged by (line count, neighbourhood): count and coverage sum per group.
+struct MaskCases {
+  Mask mask = 0;
+  std::uint64_t count[2] = {0, 0};  // one-line, two-line cases
+  struct Group {
+    int line_count;
+    std::uint16_t neighbourhood;
+    std::uint64_t count;
+    double coverage_sum;
+  };
+  std::vector<Group> groups;
+};
+
+// Sorted by mask; sums run in case-index order, so the result never depends on thread count.
+std::vector<MaskCases> group_cases_by_mask(const std::vector<CaseRecord>& cases);
+
+// The weight of one one-line case and of one two-line case of this mask in its fit.
+std::array<double, 2> case_weights(const MaskCases& mask_cases, const TrainOptions& options);
+
+// The fit's input: one FitCase per group, weight = case weight x count, coverage = group mean.
+// Minimising over these equals minimising over the individual cases (tested).
+std::vector<FitCase> grouped_fit_cases(const MaskCases& mask_cases, const TrainOptions& options);
+
+// Throws std::invalid_argument for bad options (no cases, weight outside [0, 1], pattern too big).
+TrainReport train_offset_table(const TrainOptions& options, const TrainProgress& progress = {});
+
+}  // namespace rsaa
