@@ -3,7 +3,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git time
   libceres-dev libeigen3-dev            # trainer: the per-mask least-squares fits
   nlohmann-json3-dev                    # table files (JSON)
   libcli11-dev                          # the rsaa command line

@@ -1,4 +1,5 @@
-// rsaa eval-table: accuracy of a table on fresh line cases, beside two baselines.
+// rsaa eval-table: accuracy of tables on fresh line cases, beside two baselines. Several tables
+// of one pattern are measured on the same cases and printed side by side.
 #include <cstdio>
 #include <memory>
 
@@ -13,7 +14,7 @@ namespace rsaa::cli {
 namespace {
 
 struct EvalArgs {
-  std::string file;
+  std::vector<std::string> files;
   std::uint64_t cases = 1000000;
   std::uint64_t seed = 2;
   bool json = false;
@@ -26,59 +27,39 @@ nlohmann::json stats_json(const ErrorStats& s) {
           {"share_over_1_16", s.share_over_1_16}};
 }
 
-void print_row(const char* label, const ErrorStats& s) {
-  if (s.count == 0) {
-    std::printf("    %-26s %9s %9s %9s %9s\n", label, "-", "-", "-", "-");
-    return;
+nlohmann::json accuracy_json(const std::string& file, const OffsetTable& table,
+                             const TableAccuracy& acc) {
+  nlohmann::json out = {{"table", file}, {"pattern", table.pattern.name},
+                        {"training", table.training}};
+  for (int k = 0; k < kCaseKindCount; ++k) {
+    out["results"][to_string(CaseKind(k))] = {{"table", stats_json(acc.table[k])},
+                                              {"zero_offset", stats_json(acc.zero_offset[k])},
+                                              {"fallback_rule", stats_json(acc.fallback_rule[k])}};
+    for (int s = 0; s < 3; ++s)
+      out["by_source"][to_string(OffsetSource(s))][to_string(CaseKind(k))] =
+          stats_json(acc.by_source[s][k]);
   }
-  std::printf("    %-26s %9.5f %9.5f %9.5f %8.2f%%\n", label, s.rms, s.mean_abs, s.p95_abs,
-              100.0 * s.share_over_1_16);
+  return out;
 }
 
-int run_eval(const EvalArgs& a) {
-  const OffsetTable table = read_offset_table(a.file);
-  const auto seed_it = table.training.find("seed");
-  if (seed_it != table.training.end() && seed_it->is_number_unsigned() &&
-      seed_it->get<std::uint64_t>() == a.seed)
-    std::fprintf(stderr,
-                 "rsaa eval-table: warning: --seed %llu is the table's training seed: these are "
-                 "its training cases, not fresh ones\n",
-                 static_cast<unsigned long long>(a.seed));
-  ProgressPrinter printer(a.json);
-  printer.stage("generating " + std::to_string(a.cases) + " cases");
-  const auto cases = generate_cases(table.pattern, a.cases, a.seed, a.threads,
-                                    [&](std::uint64_t d, std::uint64_t t) { printer.step(d, t); });
-  const TableAccuracy acc = evaluate_table(table, cases);
-
-  if (a.json) {
-    nlohmann::json out = {{"table", a.file},
-                          {"pattern", table.pattern.name},
-                          {"cases", a.cases},
-                          {"seed", a.seed},
-                          {"training", table.training}};
-    for (int k = 0; k < kCaseKindCount; ++k) {
-      out["results"][to_string(CaseKind(k))] = {
-          {"table", stats_json(acc.table[k])},
-          {"zero_offset", stats_json(acc.zero_offset[k])},
-          {"fallback_rule", stats_json(acc.fallback_rule[k])}};
-      for (int s = 0; s < 3; ++s)
-        out["by_source"][to_string(OffsetSource(s))][to_string(CaseKind(k))] =
-            stats_json(acc.by_source[s][k]);
-    }
-    std::printf("%s\n", out.dump(2).c_str());
-    return 0;
-  }
-
+std::string made_by(const OffsetTable& table) {
   const auto command = table.training.find("command");
-  std::printf("table %s: pattern %s, made by: %s\n", a.file.c_str(), table.pattern.name.c_str(),
-              command != table.training.end() && command->is_string()
-                  ? command->get<std::string>().c_str()
-                  : "(unknown)");
-  std::printf("fresh cases: %llu (seed %llu), %llu one-line, %llu two-line\n",
-              static_cast<unsigned long long>(a.cases), static_cast<unsigned long long>(a.seed),
-              static_cast<unsigned long long>(acc.table[kOneLine].count),
-              static_cast<unsigned long long>(acc.table[kTwoLine].count));
-  std::printf("error = bilinear estimate - exact coverage\n");
+  return command != table.training.end() && command->is_string() ? command->get<std::string>()
+                                                                   : "(unknown)";
+}
+
+void print_row(const std::string& label, const ErrorStats& s) {
+  if (s.count == 0) {
+    std::printf("    %-26s %9s %9s %9s %9s\n", label.c_str(), "-", "-", "-", "-");
+    return;
+  }
+  std::printf("    %-26s %9.5f %9.5f %9.5f %8.2f%%\n", label.c_str(), s.rms, s.mean_abs,
+              s.p95_abs, 100.0 * s.share_over_1_16);
+}
+
+void print_one(const std::string& file, const OffsetTable& table, const TableAccuracy& acc) {
+  std::printf("table %s: pattern %s, made by: %s\n", file.c_str(), table.pattern.name.c_str(),
+              made_by(table).c_str());
   std::printf("    %-26s %9s %9s %9s %9s\n", "", "RMS", "mean|e|", "p95|e|", ">1/16");
   for (int k = 0; k < kCaseKindCount; ++k) {
     std::printf("  %s cases%s\n", to_string(CaseKind(k)), k == kMix ? " (50/50)" : "");
@@ -89,10 +70,66 @@ int run_eval(const EvalArgs& a) {
   std::printf("  table error by the rule behind each case's mask entry (50/50 mix)\n");
   for (int s = 0; s < 3; ++s) {
     const ErrorStats& st = acc.by_source[s][kMix];
-    const std::string label = std::string(to_string(OffsetSource(s))) + " (" +
-                              std::to_string(st.count) + " cases)";
-    print_row(label.c_str(), st);
+    print_row(std::string(to_string(OffsetSource(s))) + " (" + std::to_string(st.count) + " cases)",
+              st);
   }
+}
+
+// One line per table: RMS per case kind, then p95 and share > 1/16 of the mix.
+void print_comparison(const std::vector<std::string>& files, const std::vector<TableAccuracy>& acc) {
+  std::printf("%-44s %9s %9s %9s %9s %8s\n", "RMS error (one-line, two-line, 50/50 mix)",
+              "one-line", "two-line", "mix", "mix p95", "mix>1/16");
+  const auto row = [](const std::string& label, const std::array<ErrorStats, kCaseKindCount>& s) {
+    std::printf("%-44s %9.5f %9.5f %9.5f %9.5f %7.2f%%\n", label.c_str(), s[kOneLine].rms,
+                s[kTwoLine].rms, s[kMix].rms, s[kMix].p95_abs, 100.0 * s[kMix].share_over_1_16);
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) row(files[i], acc[i].table);
+  row("baseline: zero offset (no AA)", acc[0].zero_offset);
+  row("baseline: fallback rule for every mask", acc[0].fallback_rule);
+}
+
+int run_eval(const EvalArgs& a) {
+  std::vector<OffsetTable> tables;
+  for (const std::string& file : a.files) {
+    tables.push_back(read_offset_table(file));
+    const OffsetTable& t = tables.back();
+    if (t.pattern.positions.size() != tables.front().pattern.positions.size() ||
+        t.pattern.name != tables.front().pattern.name)
+      throw std::invalid_argument(file + ": pattern " + t.pattern.name + " differs from " +
+                                  tables.front().pattern.name + " of " + a.files.front() +
+                                  "; compare tables of one pattern");
+    const auto seed = t.training.find("seed");
+    if (seed != t.training.end() && seed->is_number_unsigned() && seed->get<std::uint64_t>() == a.seed)
+      std::fprintf(stderr,
+                   "rsaa eval-table: warning: --seed %llu is the training seed of %s: these are "
+                   "its training cases, not fresh ones\n",
+                   static_cast<unsigned long long>(a.seed), file.c_str());
+  }
+  ProgressPrinter printer(a.json);
+  printer.stage("generating " + std::to_string(a.cases) + " fresh cases");
+  const auto cases = generate_cases(tables.front().pattern, a.cases, a.seed, a.threads,
+                                    [&](std::uint64_t d, std::uint64_t t) { printer.step(d, t); });
+  std::vector<TableAccuracy> accuracy;
+  for (const OffsetTable& t : tables) accuracy.push_back(evaluate_table(t, cases));
+
+  if (a.json) {
+    nlohmann::json out = {{"cases", a.cases}, {"seed", a.seed}, {"tables", nlohmann::json::array()}};
+    for (std::size_t i = 0; i < tables.size(); ++i)
+      out["tables"].push_back(accuracy_json(a.files[i], tables[i], accuracy[i]));
+    // One table: its fields at the top level too, the common case for scripts.
+    if (tables.size() == 1) out.update(out["tables"][0]);
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
+  std::printf("fresh cases: %llu (seed %llu), %llu one-line, %llu two-line; "
+              "error = bilinear estimate - exact coverage\n",
+              static_cast<unsigned long long>(a.cases), static_cast<unsigned long long>(a.seed),
+              static_cast<unsigned long long>(accuracy[0].table[kOneLine].count),
+              static_cast<unsigned long long>(accuracy[0].table[kTwoLine].count));
+  if (tables.size() == 1)
+    print_one(a.files[0], tables[0], accuracy[0]);
+  else
+    print_comparison(a.files, accuracy);
   return 0;
 }
 
@@ -101,9 +138,10 @@ int run_eval(const EvalArgs& a) {
 Action add_eval_table_command(CLI::App& app) {
   auto args = std::make_shared<EvalArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "eval-table", "Accuracy of an offset table on fresh line cases (RMS, mean |error|, 95th "
-                    "percentile, share > 1/16), beside the zero-offset and fallback baselines");
-  cmd->add_option("file", args->file, "Table file (JSON)")->required();
+      "eval-table", "Accuracy of offset tables on fresh line cases (RMS, mean |error|, 95th "
+                    "percentile, share > 1/16), beside the zero-offset and fallback baselines; "
+                    "several tables of one pattern are compared on the same cases");
+  cmd->add_option("files", args->files, "Table files (JSON)")->required();
   cmd->add_option("--cases", args->cases, "Number of fresh cases, half one-line, half two-line")
       ->capture_default_str()
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 32));
