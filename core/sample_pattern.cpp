@@ -1,5 +1,6 @@
 #include "core/sample_pattern.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -77,6 +78,12 @@ SamplePattern pattern_from_gl_positions(const std::string& name,
   pixel.reserve(gl_positions.size());
   for (Vec2 s : gl_positions) pixel.push_back(gl_sample_position_to_pixel(s));
   return pattern_from_positions(name, pixel);
+}
+
+PixelStep outside_pixel_towards(Vec2 sample) {
+  const double scale = std::max(std::abs(sample.x), std::abs(sample.y));
+  if (!(scale > 0.0)) return {1, 0};
+  return {int(std::lround(sample.x / scale)), int(std::lround(sample.y / scale))};
 }
 
 bool is_known_pattern_name(const std::string& name) {

@@ -33,6 +33,16 @@ SamplePattern pattern_from_positions(const std::string& name, const std::vector<
 SamplePattern pattern_from_gl_positions(const std::string& name,
                                         const std::vector<Vec2>& gl_positions);
 
+// The neighbouring pixel (i, j) != (0, 0) that lies in a subsample's direction: the subsample
+// scaled onto the boundary of the square max(|x|, |y|) = 1, each coordinate rounded (half away
+// from zero). Pixel space, y down. RSAA's authentication compares a subsample with this pixel;
+// for d3d8x it reproduces the paper's sampleOffset[] table (tested). A subsample at the centre
+// has no direction: (1, 0).
+struct PixelStep {
+  int i = 0, j = 0;
+};
+PixelStep outside_pixel_towards(Vec2 sample);
+
 // Names a table may carry besides the built-ins: patterns whose positions come from the
 // table itself ("gl4x", read from the GL driver, and "custom-..." patterns).
 bool is_known_pattern_name(const std::string& name);

@@ -69,3 +69,21 @@ TEST(Conventions, PatternFromPositionsRejectsBadPositions) {
 
 }  // namespace
 }  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+TEST(Conventions, OutsidePixelTowardsSubsampleMatchesThePapersTableForD3D8x) {
+  // Listing 2/3 of the paper: sampleOffset[] for the eight D3D 8x subsamples (y down).
+  const int expected[8][2] = {{0, -1}, {0, 1}, {1, 0}, {-1, -1}, {-1, 1}, {-1, 0}, {0, 1}, {1, -1}};
+  const SamplePattern p = builtin_pattern("d3d8x");
+  for (int s = 0; s < 8; ++s) {
+    const PixelStep step = outside_pixel_towards(p.positions[s]);
+    EXPECT_EQ(step.i, expected[s][0]) << "subsample " << s;
+    EXPECT_EQ(step.j, expected[s][1]) << "subsample " << s;
+  }
+  EXPECT_EQ(outside_pixel_towards({0, 0}).i, 1);
+}
+
+}  // namespace
+}  // namespace rsaa

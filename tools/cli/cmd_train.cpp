@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "core/parallel.h"
+#include "runtime/gl_context.h"
+#include "runtime/rsaa_pass.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/progress.h"
 #include "trainer/train.h"
@@ -58,7 +60,10 @@ double peak_memory_mib() {
 int run_train(const TrainArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   TrainOptions options;
-  if (a.positions.empty()) {
+  if (a.positions.empty() && a.pattern == "gl4x") {
+    gl::HeadlessContext context;  // the pattern of this machine's GL driver
+    options.pattern = query_gl_sample_pattern(4);
+  } else if (a.positions.empty()) {
     options.pattern = builtin_pattern(a.pattern);
   } else {
     if (a.pattern != "gl4x" && a.pattern.rfind("custom-", 0) != 0)
@@ -125,7 +130,7 @@ Action add_train_command(CLI::App& app) {
       "train", "Fit one resampling offset per similarity mask on random line cases and write "
                "DIR/P.json, DIR/P.glsl, DIR/P.hlsl");
   cmd->add_option("--pattern", args->pattern,
-                  "Sample pattern: d3d4x, d3d8x, d3d16x; or gl4x / custom-NAME with --positions")
+                  "Sample pattern: d3d4x, d3d8x, d3d16x; gl4x (read from the GL driver); custom-NAME with --positions")
       ->required();
   cmd->add_option("--positions", args->positions,
                   "Subsample positions in pixel space (+y down), \"x,y x,y ...\"");

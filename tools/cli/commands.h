@@ -12,5 +12,7 @@ using Action = std::function<int()>;
 
 Action add_train_command(CLI::App& app);
 Action add_eval_table_command(CLI::App& app);
+Action add_render_command(CLI::App& app);
+Action add_compare_command(CLI::App& app);
 
 }  // namespace rsaa::cli

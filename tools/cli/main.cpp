@@ -7,7 +7,7 @@
 #include "tools/cli/commands.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"rsaa: Resampling Anti-Aliasing (Reshetov, HPG 2012): offset-table trainer and tools"};
+  CLI::App app{"rsaa: Resampling Anti-Aliasing (Reshetov, HPG 2012): table trainer, renderer and tools"};
   app.require_subcommand(1);
   std::map<const CLI::App*, rsaa::cli::Action> actions;
   const auto add = [&](rsaa::cli::Action (*add_command)(CLI::App&)) {
@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   };
   add(rsaa::cli::add_train_command);
   add(rsaa::cli::add_eval_table_command);
+  add(rsaa::cli::add_render_command);
+  add(rsaa::cli::add_compare_command);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,77 @@
+#include "runtime/camera.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/conventions.h"
+
+namespace rsaa {
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+  return glm::perspective(glm::radians(fov_y_degrees), aspect, near_plane, far_plane);
+}
+
+Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float fov_y_degrees) {
+  Camera c;
+  c.fov_y_degrees = fov_y_degrees;
+  c.target = 0.5f * (lo + hi);
+  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+  const float distance = radius / std::sin(glm::radians(0.5f * fov_y_degrees)) * 1.05f;
+  c.eye = c.target + distance * glm::normalize(glm::vec3(0.55f, 0.45f, 1.0f));
+  c.near_plane = std::max(distance - 1.5f * radius, distance * 1e-3f);
+  c.far_plane = distance + 1.5f * radius;
+  return c;
+}
+
+Camera parse_camera(const std::string& text, const glm::vec3& lo, const glm::vec3& hi) {
+  std::vector<float> v;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    std::size_t used = 0;
+    float x;
+    try {
+      x = std::stof(item, &used);
+    } catch (const std::exception&) {
+      throw std::invalid_argument("--camera: '" + item + "' is not a number");
+    }
+    if (used != item.size() && item.find_first_not_of(" ", used) != std::string::npos)
+      throw std::invalid_argument("--camera: '" + item + "' is not a number");
+    if (!std::isfinite(x)) throw std::invalid_argument("--camera: values must be finite");
+    v.push_back(x);
+  }
+  if (v.size() != 6 && v.size() != 7)
+    throw std::invalid_argument("--camera: expected ex,ey,ez,tx,ty,tz[,fov], got " +
+                                std::to_string(v.size()) + " numbers");
+  Camera c;
+  c.eye = {v[0], v[1], v[2]};
+  c.target = {v[3], v[4], v[5]};
+  if (v.size() == 7) c.fov_y_degrees = v[6];
+  if (!(c.fov_y_degrees > 1.0f && c.fov_y_degrees < 170.0f))
+    throw std::invalid_argument("--camera: fov must be within (1, 170) degrees");
+  const glm::vec3 forward = c.target - c.eye;
+  if (glm::length(forward) <= 0.0f) throw std::invalid_argument("--camera: eye equals target");
+  if (glm::length(glm::cross(glm::normalize(forward), c.up)) < 1e-4f) c.up = {0.0f, 0.0f, 1.0f};
+  // Near and far enclose the scene's bounding sphere as seen from the eye.
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+  const float distance = glm::length(centre - c.eye);
+  c.far_plane = distance + 1.5f * radius;
+  c.near_plane = std::max(distance - 1.5f * radius, c.far_plane * 1e-4f);
+  return c;
+}
+
+glm::vec2 jitter_ndc_for_sample(double sx, double sy, int width, int height) {
+  // The image moves by -s so that the scene point at centre + s lands on the centre; in window
+  // space (y up) that is -pixel_to_gl(s). One window pixel is 2 / size NDC units.
+  const Vec2 s = pixel_to_gl({sx, sy});
+  return {float(-2.0 * s.x / width), float(-2.0 * s.y / height)};
+}
+
+}  // namespace rsaa

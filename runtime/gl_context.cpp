@@ -1,0 +1,73 @@
+#include "runtime/gl_context.h"
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <cstdio>
+
+namespace rsaa::gl {
+namespace {
+
+std::string hex(unsigned v) {
+  char b[16];
+  std::snprintf(b, sizeof b, "0x%04x", v);
+  return b;
+}
+
+}  // namespace
+
+void check(const char* where) {
+  GLenum first = glGetError();
+  if (first == GL_NO_ERROR) return;
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  throw GlError(std::string("GL error ") + hex(first) + " in " + where);
+}
+
+void require_gl45() {
+  if (epoxy_gl_version() < 45)
+    throw GlError("OpenGL 4.5 core is required; the context offers " +
+                  std::to_string(epoxy_gl_version() / 10) + "." +
+                  std::to_string(epoxy_gl_version() % 10));
+}
+
+HeadlessContext::HeadlessContext() {
+  if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
+    throw GlError("EGL lacks EGL_MESA_platform_surfaceless (install libegl-mesa0)");
+  EGLDisplay display =
+      eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLint major = 0, minor = 0;
+  if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor))
+    throw GlError("cannot initialise the surfaceless EGL display (EGL error " +
+                  hex(eglGetError()) + ")");
+  if (!eglBindAPI(EGL_OPENGL_API)) throw GlError("EGL cannot bind the OpenGL API");
+  const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                               EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                               EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+  if (context == EGL_NO_CONTEXT) {
+    const EGLint error = eglGetError();
+    eglTerminate(display);
+    throw GlError("cannot create an OpenGL 4.5 core context (EGL error " + hex(error) + ")");
+  }
+  if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+    eglDestroyContext(display, context);
+    eglTerminate(display);
+    throw GlError("cannot make the EGL context current");
+  }
+  display_ = display;
+  context_ = context;
+  require_gl45();
+}
+
+HeadlessContext::~HeadlessContext() {
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroyContext(display_, context_);
+  eglTerminate(display_);
+}
+
+std::string HeadlessContext::renderer() const {
+  return reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+}
+
+}  // namespace rsaa::gl

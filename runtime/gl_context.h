@@ -1,0 +1,36 @@
+// The GL context layer: a headless context through EGL (surfaceless Mesa, no X server) for
+// tests, benchmarks and `rsaa render`. Everything else in runtime/ only needs a current GL 4.5
+// core context, whoever made it (the GLFW viewer makes its own).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace rsaa::gl {
+
+class GlError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws GlError naming `where` if the GL error flag is set (and drains it).
+void check(const char* where);
+
+// Throws GlError when the current context is older than 4.5 core.
+void require_gl45();
+
+class HeadlessContext {
+ public:
+  HeadlessContext();  // throws GlError with the EGL error when no context can be made
+  ~HeadlessContext();
+  HeadlessContext(const HeadlessContext&) = delete;
+  HeadlessContext& operator=(const HeadlessContext&) = delete;
+
+  std::string renderer() const;
+
+ private:
+  void* display_ = nullptr;
+  void* context_ = nullptr;
+};
+
+}  // namespace rsaa::gl

@@ -1,0 +1,74 @@
+// Owning handles for GL objects and a shader program builder. Move-only.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rsaa::gl {
+
+template <void (*Delete)(GLuint)>
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(GLuint id) : id_(id) {}
+  ~Handle() { reset(); }
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  Handle& operator=(Handle&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  GLuint get() const { return id_; }
+  void reset() {
+    if (id_) Delete(id_);
+    id_ = 0;
+  }
+
+ private:
+  GLuint id_ = 0;
+};
+
+void delete_texture(GLuint id);
+void delete_framebuffer(GLuint id);
+void delete_buffer(GLuint id);
+void delete_vertex_array(GLuint id);
+void delete_program(GLuint id);
+void delete_query(GLuint id);
+
+using Texture = Handle<delete_texture>;
+using Framebuffer = Handle<delete_framebuffer>;
+using Buffer = Handle<delete_buffer>;
+using VertexArray = Handle<delete_vertex_array>;
+using Program = Handle<delete_program>;
+using Query = Handle<delete_query>;
+
+// An immutable 2D (or 2D-array when layers > 0, or multisample when samples > 0) texture.
+Texture make_texture_2d(GLenum internal_format, int width, int height, GLenum filter = GL_NEAREST);
+Texture make_texture_2d_array(GLenum internal_format, int width, int height, int layers);
+Texture make_texture_2d_multisample(GLenum internal_format, int width, int height, int samples);
+
+// A framebuffer with the given colour attachments (in order) and an optional depth attachment;
+// throws GlError if incomplete. layer >= 0 attaches that layer of an array texture.
+struct Attachment {
+  GLuint texture = 0;
+  int layer = -1;
+};
+Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth = {});
+
+// Compiles and links; `sources` per stage are concatenated after "#version 450 core" and the
+// defines. Throws GlError with the info log and the stage name.
+struct ShaderStage {
+  GLenum stage;
+  std::string source;
+};
+Program make_program(const std::vector<ShaderStage>& stages, const std::string& defines,
+                     const std::string& label);
+
+}  // namespace rsaa::gl

@@ -1,0 +1,82 @@
+#include "runtime/gpu_scene.h"
+
+#include <cstddef>
+
+#include "runtime/gl_context.h"
+
+namespace rsaa {
+
+GpuScene::GpuScene(const Scene& scene)
+    : draws_(scene.draws), background_(scene.background), triangles_(scene.triangle_count()) {
+  GLuint id;
+  glCreateBuffers(1, &id);
+  vertices_ = gl::Buffer(id);
+  glNamedBufferStorage(id, GLsizeiptr(scene.vertices.size() * sizeof(SceneVertex)),
+                       scene.vertices.data(), 0);
+  glCreateBuffers(1, &id);
+  indices_ = gl::Buffer(id);
+  glNamedBufferStorage(id, GLsizeiptr(scene.indices.size() * sizeof(std::uint32_t)),
+                       scene.indices.data(), 0);
+  glCreateVertexArrays(1, &id);
+  vao_ = gl::VertexArray(id);
+  glVertexArrayVertexBuffer(id, 0, vertices_.get(), 0, sizeof(SceneVertex));
+  glVertexArrayElementBuffer(id, indices_.get());
+  const struct {
+    GLuint location;
+    GLint size;
+    std::size_t offset;
+  } attributes[] = {{0, 3, offsetof(SceneVertex, position)},
+                    {1, 3, offsetof(SceneVertex, normal)},
+                    {2, 2, offsetof(SceneVertex, uv)},
+                    {3, 3, offsetof(SceneVertex, albedo)}};
+  for (const auto& a : attributes) {
+    glEnableVertexArrayAttrib(id, a.location);
+    glVertexArrayAttribFormat(id, a.location, a.size, GL_FLOAT, GL_FALSE, GLuint(a.offset));
+    glVertexArrayAttribBinding(id, a.location, 0);
+  }
+  for (const TextureImage& t : scene.textures) {
+    GLuint tex;
+    glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+    const int levels = 1 + int(std::floor(std::log2(std::max(t.width, t.height))));
+    glTextureStorage2D(tex, levels, GL_SRGB8_ALPHA8, t.width, t.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // Rows are stored top first; GL's first row is the bottom one, and the loader already
+    // flipped v, so upload as is.
+    glTextureSubImage2D(tex, 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
+    glGenerateTextureMipmap(tex);
+    glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    textures_.emplace_back(tex);
+  }
+  gl::check("uploading the scene");
+}
+
+void GpuScene::draw(GLuint program) const {
+  glBindVertexArray(vao_.get());
+  const GLint has_texture = glGetUniformLocation(program, "u_has_texture");
+  const GLint primitive_base = glGetUniformLocation(program, "u_primitive_base");
+  const GLint texture = glGetUniformLocation(program, "u_texture");
+  if (texture >= 0) glProgramUniform1i(program, texture, 0);
+  for (const DrawRange& d : draws_) {
+    const bool textured = d.texture >= 0 && d.texture < int(textures_.size());
+    if (has_texture >= 0) glProgramUniform1i(program, has_texture, textured);
+    if (primitive_base >= 0) glProgramUniform1ui(program, primitive_base, d.first_index / 3);
+    if (textured) glBindTextureUnit(0, textures_[d.texture].get());
+    glDrawElements(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(std::size_t(d.first_index) * sizeof(std::uint32_t)));
+  }
+  glBindVertexArray(0);
+}
+
+View make_view(const Camera& camera, int width, int height) {
+  View v;
+  v.view = camera.view();
+  v.projection = camera.projection(float(width) / float(height));
+  v.width = width;
+  v.height = height;
+  return v;
+}
+
+}  // namespace rsaa

@@ -1,0 +1,30 @@
+#include "runtime/pass_timer.h"
+
+#include <algorithm>
+
+namespace rsaa {
+
+void PassTimer::begin(const std::string& pass) {
+  GLuint id;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &id);
+  entries_.push_back({pass, gl::Query(id)});
+  glBeginQuery(GL_TIME_ELAPSED, id);
+}
+
+void PassTimer::end() { glEndQuery(GL_TIME_ELAPSED); }
+
+std::vector<PassTime> PassTimer::collect() {
+  std::vector<PassTime> out;
+  for (const Entry& e : entries_) {
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(e.query.get(), GL_QUERY_RESULT, &ns);
+    // Passes with the same name (the jittered passes) add up, in order of first appearance.
+    auto it = std::find_if(out.begin(), out.end(), [&](const PassTime& t) { return t.pass == e.pass; });
+    if (it == out.end()) it = out.insert(out.end(), {e.pass, 0.0});
+    it->milliseconds += ns * 1e-6;
+  }
+  entries_.clear();
+  return out;
+}
+
+}  // namespace rsaa

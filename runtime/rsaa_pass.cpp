@@ -1,0 +1,171 @@
+#include "runtime/rsaa_pass.h"
+
+#include <regex>
+#include <stdexcept>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/conventions.h"
+#include "runtime/camera.h"
+#include "runtime/gl_context.h"
+#include "runtime/scene_renderer.h"
+#include "runtime/shader_library.h"
+
+namespace rsaa {
+namespace {
+
+SamplePattern pattern_named(const std::string& name) {
+  if (name == "gl4x") return query_gl_sample_pattern(4);
+  if (name == "d3d4x" || name == "d3d8x") return builtin_pattern(name);
+  throw std::invalid_argument("RSAA pattern '" + name + "' is not one of d3d4x, d3d8x, gl4x");
+}
+
+// The sample positions baked into a GLSL table (GL window space), back in pixel space.
+std::vector<Vec2> table_sample_positions(const std::string& glsl) {
+  const std::size_t start = glsl.find("rsaa_sample_positions[");
+  const std::string body = glsl.substr(start, glsl.find(';', start) - start);
+  static const std::regex pair(R"(vec2\(([-+0-9.eE]+), ([-+0-9.eE]+)\))");
+  std::vector<Vec2> out;
+  for (auto it = std::sregex_iterator(body.begin(), body.end(), pair); it != std::sregex_iterator(); ++it)
+    out.push_back(gl_to_pixel({std::stod((*it)[1]), std::stod((*it)[2])}));
+  return out;
+}
+
+GLenum code_format(int bits) {
+  switch (bits) {
+    case 8: return GL_R8UI;
+    case 16: return GL_R16UI;
+    case 32: return GL_R32UI;
+  }
+  throw std::invalid_argument("RSAA code bits must be 8, 16 or 32, not " + std::to_string(bits));
+}
+
+void set_uniform(GLuint program, const char* name, int value) {
+  glProgramUniform1i(program, glGetUniformLocation(program, name), value);
+}
+
+void set_frame_uniforms(GLuint program, const RsaaFrame& frame, float threshold) {
+  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_inverse_projection"), 1,
+                            GL_FALSE, glm::value_ptr(frame.inverse_projection));
+  glProgramUniform2f(program, glGetUniformLocation(program, "u_viewport"), float(frame.width),
+                     float(frame.height));
+  glProgramUniform1f(program, glGetUniformLocation(program, "u_threshold"), threshold);
+}
+
+// The outside pixel of each subsample, converted to window space (+y up).
+glm::ivec2 window_step(Vec2 sample) {
+  const PixelStep s = outside_pixel_towards(sample);
+  const Vec2 gl = pixel_to_gl({double(s.i), double(s.j)});
+  return {int(gl.x), int(gl.y)};
+}
+
+}  // namespace
+
+SamplePattern query_gl_sample_pattern(int samples) {
+  const gl::Texture texture = gl::make_texture_2d_multisample(GL_RGBA8, 1, 1, samples);
+  const gl::Framebuffer fb = gl::make_framebuffer({{texture.get()}});
+  glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+  std::vector<Vec2> positions;
+  for (int i = 0; i < samples; ++i) {
+    GLfloat p[2];
+    glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(i), p);
+    positions.push_back({p[0], p[1]});
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl::check("reading the driver's sample positions");
+  return pattern_from_gl_positions("gl" + std::to_string(samples) + "x", positions);
+}
+
+RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
+    : settings_(settings), pattern_(pattern_named(settings.pattern)), width_(width), height_(height) {
+  if (settings.auth < 0 || settings.auth > 2)
+    throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
+  if (!(settings.threshold >= 0.0f)) throw std::invalid_argument("RSAA threshold must be >= 0");
+  const std::string table = gl::table_glsl(pattern_.name);
+  const std::vector<Vec2> baked = table_sample_positions(table);
+  if (baked.size() != pattern_.positions.size())
+    throw std::runtime_error("tables/" + pattern_.name + ".glsl has " + std::to_string(baked.size()) +
+                             " samples; the pattern has " + std::to_string(pattern_.size()));
+  for (int i = 0; i < pattern_.size(); ++i)
+    if (length(baked[i] - pattern_.positions[i]) > 1e-6)
+      throw std::runtime_error("tables/" + pattern_.name + ".glsl was trained for other sample " +
+                               "positions than this driver's (sample " + std::to_string(i) +
+                               "); retrain it with rsaa train --pattern " + pattern_.name);
+
+  const int n = pattern_.size();
+  codes_ = gl::make_texture_2d_array(code_format(settings.code_bits), width, height, n);
+  subsample_depth_ = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
+  for (int i = 0; i < n; ++i)
+    subsample_targets_.push_back(gl::make_framebuffer({{codes_.get(), i}}, {subsample_depth_.get()}));
+
+  std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(n) + "\n" +
+                        "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
+                        "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n";
+  if (settings.depth_similarity) defines += "#define RSAA_SIMILARITY_DEPTH\n";
+  subsample_program_ = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
+                                         {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
+                                         {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
+                                        defines, "RSAA pre-pass");
+  if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
+  post_program_ = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                    {GL_FRAGMENT_SHADER, table + gl::shader_source("rsaa_post.frag")}},
+                                   defines, "RSAA post-process");
+  std::vector<glm::ivec2> steps;
+  for (const Vec2& s : pattern_.positions) steps.push_back(window_step(s));
+  glProgramUniform2iv(post_program_.get(), glGetUniformLocation(post_program_.get(), "u_neighbours"),
+                      n, glm::value_ptr(steps[0]));
+  gl::check("creating the RSAA pass");
+}
+
+void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
+  const GLuint program = subsample_program_.get();
+  set_frame_uniforms(program, frame, settings_.threshold);
+  set_uniform(program, "u_centre_normal", 1);
+  set_uniform(program, "u_centre_primitive", 2);
+  set_uniform(program, "u_centre_depth", 3);
+  glBindTextureUnit(1, frame.centre_normal);
+  glBindTextureUnit(2, frame.centre_primitive);
+  glBindTextureUnit(3, frame.centre_depth);
+  const GLint neighbour = glGetUniformLocation(program, "u_neighbour");
+  for (int i = 0; i < pattern_.size(); ++i) {
+    const GLuint fb = subsample_targets_[i].get();
+    const GLuint zero[4] = {0, 0, 0, 0};
+    const GLfloat far_depth = 1.0f;
+    glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    const glm::ivec2 step = window_step(pattern_.positions[i]);
+    glProgramUniform2i(program, neighbour, step.x, step.y);
+    const Vec2 s = pattern_.positions[i];
+    draw_geometry(program, jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height));
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl::check("RSAA pre-pass");
+}
+
+void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
+  std::vector<gl::Attachment> targets = {{output}};
+  if (settings_.output_mask) {
+    if (!mask_output) throw std::invalid_argument("RSAA resolve: output_mask set but no mask texture");
+    targets.push_back({mask_output});
+  }
+  const gl::Framebuffer fb = gl::make_framebuffer(targets);
+  const GLuint program = post_program_.get();
+  set_frame_uniforms(program, frame, settings_.threshold);
+  set_uniform(program, "u_colour", 0);
+  set_uniform(program, "u_centre_normal", 1);
+  set_uniform(program, "u_centre_depth", 2);
+  set_uniform(program, "u_codes", 3);
+  glBindTextureUnit(0, frame.colour);
+  glBindTextureUnit(1, frame.centre_normal);
+  glBindTextureUnit(2, frame.centre_depth);
+  glBindTextureUnit(3, codes_.get());
+  glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+  glViewport(0, 0, frame.width, frame.height);
+  glUseProgram(program);
+  draw_fullscreen_triangle();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl::check("RSAA post-process");
+}
+
+}  // namespace rsaa

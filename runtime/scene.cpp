@@ -1,0 +1,31 @@
+#include "runtime/scene.h"
+
+#include <limits>
+
+namespace rsaa {
+
+glm::vec3 Scene::bounds_min() const {
+  glm::vec3 lo(std::numeric_limits<float>::max());
+  for (std::uint32_t i : indices) lo = glm::min(lo, vertices[i].position);
+  return lo;
+}
+
+glm::vec3 Scene::bounds_max() const {
+  glm::vec3 hi(std::numeric_limits<float>::lowest());
+  for (std::uint32_t i : indices) hi = glm::max(hi, vertices[i].position);
+  return hi;
+}
+
+Scene load_scene(const std::string& spec) {
+  const std::string prefix = "builtin:";
+  if (spec.rfind(prefix, 0) == 0) return builtin_scene(spec.substr(prefix.size()));
+  return load_model(spec);
+}
+
+Camera choose_camera(const Scene& scene, const std::optional<Camera>& requested) {
+  if (requested) return *requested;
+  if (scene.camera) return *scene.camera;
+  return frame_bounds(scene.bounds_min(), scene.bounds_max());
+}
+
+}  // namespace rsaa

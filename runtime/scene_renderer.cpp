@@ -1,0 +1,62 @@
+#include "runtime/scene_renderer.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "runtime/gl_context.h"
+#include "runtime/shader_library.h"
+
+namespace rsaa {
+namespace {
+
+gl::Program make_scene_program(const std::string& defines, const std::string& label) {
+  return gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
+                           {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
+                           {GL_FRAGMENT_SHADER, gl::shader_source("scene_shade.frag")}},
+                          defines, label);
+}
+
+}  // namespace
+
+SceneRenderer::SceneRenderer()
+    : shade_(make_scene_program("", "scene shading")),
+      gbuffer_(make_scene_program("#define RSAA_GBUFFER\n#define RSAA_SAMPLE_COUNT 1\n",
+                                  "scene shading + G-buffer")) {}
+
+void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc,
+                         GLuint program) {
+  glUseProgram(program);
+  glUniformMatrix4fv(glGetUniformLocation(program, "u_view"), 1, GL_FALSE, glm::value_ptr(view.view));
+  glUniformMatrix4fv(glGetUniformLocation(program, "u_projection"), 1, GL_FALSE,
+                     glm::value_ptr(view.projection));
+  glUniform2f(glGetUniformLocation(program, "u_jitter_ndc"), jitter_ndc.x, jitter_ndc.y);
+  glViewport(0, 0, view.width, view.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  scene.draw(program);
+  glDisable(GL_DEPTH_TEST);
+}
+
+void clear_to_background(GLuint framebuffer, const GpuScene& scene) {
+  const glm::vec3 bg = scene.background();
+  const GLfloat colour[4] = {bg.r, bg.g, bg.b, 1.0f};
+  const GLfloat depth = 1.0f;
+  glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, colour);
+  glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &depth);
+}
+
+gl::Program make_fullscreen_program(const std::string& fragment_name, const std::string& defines) {
+  return gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                           {GL_FRAGMENT_SHADER, gl::shader_source(fragment_name)}},
+                          defines, fragment_name);
+}
+
+void draw_fullscreen_triangle() {
+  GLuint id;  // core profile needs a bound VAO even without attributes
+  glCreateVertexArrays(1, &id);
+  const gl::VertexArray empty(id);
+  glBindVertexArray(id);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+}  // namespace rsaa

@@ -1,0 +1,35 @@
+// Drawing the scene at one sample position: the shading program every technique shares, in two
+// forms (colour only; colour + the RSAA G-buffer), and the colour targets of a 1x pass.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "runtime/gl_objects.h"
+#include "runtime/gpu_scene.h"
+
+namespace rsaa {
+
+class SceneRenderer {
+ public:
+  SceneRenderer();
+
+  // Sets the frame uniforms on `program` and draws the scene with the image translated by
+  // `jitter_ndc` (see jitter_ndc_for_sample). The caller binds the framebuffer.
+  static void draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program);
+
+  GLuint shade_program() const { return shade_.get(); }
+  // Also writes location 1: RG16UI compressed face normal, location 2: R32UI primitive id + 1.
+  GLuint gbuffer_program() const { return gbuffer_.get(); }
+
+ private:
+  gl::Program shade_, gbuffer_;
+};
+
+// Clears a framebuffer's colour attachment 0 to the scene background and its depth to 1.
+void clear_to_background(GLuint framebuffer, const GpuScene& scene);
+
+// A fullscreen-triangle program from fullscreen.vert and the given fragment shader.
+gl::Program make_fullscreen_program(const std::string& fragment_name, const std::string& defines);
+void draw_fullscreen_triangle();
+
+}  // namespace rsaa

@@ -1,0 +1,82 @@
+#include "runtime/technique.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "runtime/techniques/techniques.h"
+
+namespace rsaa {
+namespace {
+
+int samples_or(const TechniqueOptions& o, int fallback) { return o.samples ? o.samples : fallback; }
+
+}  // namespace
+
+const std::vector<std::string>& technique_names() {
+  static const std::vector<std::string> names = {"noaa", "msaa", "ssaa", "rsaa"};
+  return names;
+}
+
+void validate(const TechniqueOptions& o) {
+  const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
+  if (o.technique == "noaa") {
+    if (o.samples > 1) bad("noaa takes no --samples");
+  } else if (o.technique == "msaa") {
+    const int n = samples_or(o, 4);
+    if (n != 4 && n != 8) bad("msaa --samples must be 4 or 8, not " + std::to_string(n));
+  } else if (o.technique == "ssaa") {
+    const int n = samples_or(o, 64);
+    if (n != 16 && n != 64) bad("ssaa --samples must be 16 or 64, not " + std::to_string(n));
+  } else if (o.technique == "rsaa") {
+    const int n = samples_or(o, 8);
+    if (n != 4 && n != 8) bad("rsaa --samples must be 4 or 8, not " + std::to_string(n));
+    if (o.similarity != "sadp" && o.similarity != "depth")
+      bad("rsaa --similarity must be sadp or depth, not '" + o.similarity + "'");
+    if (o.auth < 0 || o.auth > 2) bad("rsaa --auth must be 0, 1 or 2");
+    if (!o.pattern.empty()) {
+      if (n == 8 && o.pattern != "d3d8x") bad("rsaa --samples 8 uses --pattern d3d8x");
+      if (n == 4 && o.pattern != "gl4x" && o.pattern != "d3d4x")
+        bad("rsaa --samples 4 uses --pattern gl4x or d3d4x");
+    }
+    if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32)
+      bad("rsaa --code-bits must be 8, 16 or 32");
+    if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)
+      bad("rsaa --threshold must be a finite number >= 0");
+  } else {
+    std::string known;
+    for (const auto& n : technique_names()) known += (known.empty() ? "" : ", ") + n;
+    bad("unknown technique '" + o.technique + "' (known: " + known + ")");
+  }
+}
+
+std::string technique_label(const TechniqueOptions& o) {
+  if (o.technique == "noaa") return "noaa";
+  if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
+  if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
+  const int n = samples_or(o, 8);
+  std::string label = "rsaa " + std::to_string(n) + "x ";
+  if (n == 4) label += (o.pattern.empty() ? std::string("gl4x") : o.pattern) + " ";
+  return label + o.similarity + " auth" + std::to_string(o.auth);
+}
+
+std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, int height) {
+  validate(o);
+  if (o.technique == "noaa") return make_noaa(width, height);
+  if (o.technique == "msaa") {
+    if (samples_or(o, 4) == 4) return make_hardware_msaa(4, width, height);
+    return make_jittered_supersampling(builtin_pattern("d3d8x").positions, width, height);
+  }
+  if (o.technique == "ssaa")
+    return make_jittered_supersampling(stratified_positions(samples_or(o, 64) == 64 ? 8 : 4, 64),
+                                       width, height);
+  RsaaSettings s;
+  const int n = samples_or(o, 8);
+  s.pattern = n == 8 ? "d3d8x" : o.pattern.empty() ? "gl4x" : o.pattern;
+  s.depth_similarity = o.similarity == "depth";
+  s.auth = o.auth;
+  s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;
+  s.code_bits = o.code_bits;
+  return make_rsaa(s, width, height);
+}
+
+}  // namespace rsaa

@@ -1,0 +1,49 @@
+// Every anti-aliasing technique is a render pass behind this one interface (Falcor-style),
+// chosen by name (DESIGN.md section 4): noaa, msaa, ssaa, rsaa, ...
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/gpu_scene.h"
+#include "runtime/pass_timer.h"
+
+namespace rsaa {
+
+struct TechniqueOptions {
+  std::string technique = "noaa";
+  int samples = 0;                   // 0: the technique's default
+  std::string similarity = "sadp";   // rsaa: sadp | depth
+  int auth = 0;                      // rsaa: 0 none, 1 post-pass, 2 pre-pass
+  double threshold = -1.0;           // rsaa: < 0 = default (0.4 SADP, 0.4 % depth)
+  std::string pattern;               // rsaa 4x: gl4x (default) | d3d4x
+  int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
+};
+
+// Throws std::invalid_argument naming the bad option (unknown technique, unsupported sample
+// count, auth outside 0..2, ...).
+void validate(const TechniqueOptions& options);
+// "rsaa 8x sadp auth1", "ssaa 64x", ...
+std::string technique_label(const TechniqueOptions& options);
+const std::vector<std::string>& technique_names();
+
+class Technique {
+ public:
+  virtual ~Technique() = default;
+  // Renders a frame of `scene` into `output`, an RGBA16F texture of view.width x view.height
+  // holding linear colour.
+  virtual void render(const GpuScene& scene, const View& view, GLuint output) = 0;
+  // Bytes per pixel of every buffer the technique keeps for a frame.
+  virtual double bytes_per_pixel() const = 0;
+  // GL times of the passes of the last frame.
+  std::vector<PassTime> take_pass_times() { return timer_.collect(); }
+
+ protected:
+  PassTimer timer_;
+};
+
+// Needs a current GL 4.5 context. Sizes are those of the frames it will render.
+std::unique_ptr<Technique> make_technique(const TechniqueOptions& options, int width, int height);
+
+}  // namespace rsaa

@@ -1,0 +1,34 @@
+// noaa: one shaded sample at each pixel centre.
+#include "runtime/techniques/techniques.h"
+
+namespace rsaa {
+namespace {
+
+class NoAA : public Technique {
+ public:
+  NoAA(int width, int height) : depth_(gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height)) {}
+
+  void render(const GpuScene& scene, const View& view, GLuint output) override {
+    const gl::Framebuffer fb = gl::make_framebuffer({{output}}, {depth_.get()});
+    timer_.begin("main");
+    clear_to_background(fb.get(), scene);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+    SceneRenderer::draw(scene, view, {0.0f, 0.0f}, renderer_.shade_program());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    timer_.end();
+  }
+
+  double bytes_per_pixel() const override { return 8 + 4; }  // RGBA16F colour + depth
+
+ private:
+  SceneRenderer renderer_;
+  gl::Texture depth_;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> make_noaa(int width, int height) {
+  return std::make_unique<NoAA>(width, height);
+}
+
+}  // namespace rsaa

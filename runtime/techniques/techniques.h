@@ -1,0 +1,25 @@
+// Constructors of the techniques behind make_technique(); one file per technique.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/vec2.h"
+#include "runtime/rsaa_pass.h"
+#include "runtime/gl_context.h"
+#include "runtime/scene_renderer.h"
+#include "runtime/technique.h"
+
+namespace rsaa {
+
+std::unique_ptr<Technique> make_noaa(int width, int height);
+std::unique_ptr<Technique> make_hardware_msaa(int samples, int width, int height);
+std::unique_ptr<Technique> make_jittered_supersampling(std::vector<Vec2> positions, int width, int height);
+// mask_output: an R32UI texture that receives the masks when settings.output_mask.
+std::unique_ptr<Technique> make_rsaa(const RsaaSettings& settings, int width, int height,
+                                     GLuint mask_output = 0);
+
+// One uniformly placed sample per cell of a per_side x per_side grid (pixel space).
+std::vector<Vec2> stratified_positions(int per_side, std::uint64_t seed);
+
+}  // namespace rsaa

@@ -1,0 +1,104 @@
+// rsaa shared GLSL: normal compression, the SADP and depth similarity measures, similarity
+// codes, and the mask -> offset lookup. Every technique that classifies subsamples includes this
+// one file (SMAA-style: configure with defines, then include).
+//
+// Defines expected before inclusion:
+//   RSAA_SAMPLE_COUNT      subsamples per pixel (must equal the table's)
+//   RSAA_SIMILARITY_DEPTH  (optional) compare depths instead of SADP
+//   RSAA_CODE_BITS         8, 16 or 32: bits of a stored similarity code
+// Conventions: OpenGL window space (+y up); bit i of a mask = subsample i similar to the centre.
+
+#ifndef RSAA_COMMON_GLSL
+#define RSAA_COMMON_GLSL
+
+// ---- normals, 2 x 16 bits (the paper's EncodeNormal/DecodeNormal). The sign of z is folded
+// into x, y: SADP only uses |dot(n, r)|. (0, 0) is reserved for "no surface" (background).
+const float RSAA_NORMAL_SCALE = float((1 << 14) - 1);
+
+uvec2 rsaa_encode_normal(vec3 n) {
+  vec2 xy = (n.z < 0.0 ? -n.xy : n.xy);
+  return uvec2(floor((xy + 2.0) * RSAA_NORMAL_SCALE));
+}
+
+vec3 rsaa_decode_normal(uvec2 c) {
+  vec2 xy = vec2(c) / RSAA_NORMAL_SCALE - 2.0;
+  return vec3(xy, sqrt(max(0.0, 1.0 - dot(xy, xy))));
+}
+
+bool rsaa_is_surface(uvec2 encoded_normal) { return encoded_normal.x != 0u; }
+
+// View-space position of the surface seen at window position `window_xy` with depth-buffer
+// value `depth` (the paper's ScreenToWorld, in view space: SADP does not depend on the frame).
+vec3 rsaa_view_position(vec2 window_xy, float depth, mat4 inverse_projection, vec2 viewport) {
+  vec4 ndc = vec4(window_xy / viewport * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+  vec4 view = inverse_projection * ndc;
+  return view.xyz / view.w;
+}
+
+// ---- similarity measures (0 = same surface; larger = more different)
+
+// SADP (paper eq. 1): |n1 . r| + |n2 . r| over |r|, r from one point to the other. Coincident
+// points (|r| below 1e-12 of the scene scale) are the same surface: 0.
+float rsaa_sadp(vec3 r12, vec3 n1, vec3 n2) {
+  float len = length(r12);
+  if (!(len > 1e-12)) return 0.0;
+  return (abs(dot(n1, r12)) + abs(dot(n2, r12))) / len;
+}
+
+// Depth alternative: relative view-space depth difference, in percent of the nearer depth.
+float rsaa_depth_difference(vec3 p1, vec3 p2) {
+  float z1 = abs(p1.z), z2 = abs(p2.z);
+  return 100.0 * abs(z1 - z2) / max(min(z1, z2), 1e-20);
+}
+
+float rsaa_similarity(vec3 p1, vec3 n1, vec3 p2, vec3 n2) {
+#ifdef RSAA_SIMILARITY_DEPTH
+  return rsaa_depth_difference(p1, p2);
+#else
+  return rsaa_sadp(p1 - p2, n1, n2);
+#endif
+}
+
+// ---- similarity codes: 0 = no surface at the subsample, 1 + round-down(value * scale) else,
+// saturating at the largest code (the paper's dbits compression).
+#ifndef RSAA_CODE_BITS
+#define RSAA_CODE_BITS 8
+#endif
+#if RSAA_CODE_BITS == 32
+const float RSAA_CODE_SCALE = float(1u << 30);
+const uint RSAA_CODE_MAX = 0xffffffffu;
+#else
+const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
+const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
+#endif
+
+uint rsaa_encode_similarity(float value) {
+  float scaled = clamp(value, 0.0, 4.0e9) * RSAA_CODE_SCALE;
+  return scaled >= float(RSAA_CODE_MAX - 1u) ? RSAA_CODE_MAX : uint(scaled) + 1u;
+}
+
+// A subsample with no surface compares as equal to a background centre and as maximally
+// different from a surface centre.
+float rsaa_decode_similarity(uint code, bool centre_is_surface) {
+  if (code == 0u) return centre_is_surface ? 1.0e9 : 0.0;
+  return float(code - 1u) / RSAA_CODE_SCALE;
+}
+
+#ifdef RSAA_SAMPLE_COUNT
+// ---- classification (paper section 2.2): one k-means step. Returns the similarity mask, or
+// the all-similar mask when no subsample exceeds the threshold.
+uint rsaa_classify(float similarity[RSAA_SAMPLE_COUNT], float threshold, out float split) {
+  float maxsim = 0.0;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) maxsim = max(maxsim, similarity[i]);
+  uint all = (1u << RSAA_SAMPLE_COUNT) - 1u;
+  split = maxsim;
+  if (!(maxsim > threshold)) return all;
+  split = 0.5 * maxsim + 0.5 * threshold;
+  uint mask = 0u;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i)
+    if (similarity[i] <= split) mask |= 1u << i;
+  return mask;
+}
+#endif  // RSAA_SAMPLE_COUNT
+
+#endif  // RSAA_COMMON_GLSL

@@ -1,0 +1,60 @@
+// RSAA pre-pass, one subsample: drawn once per subsample with the image jittered so that this
+// subsample lands on the pixel centre. Compares the surface seen by the subsample with the one
+// seen by the pixel centre (from the 1x G-buffer) and stores the compressed similarity code.
+#include "rsaa_common.glsl"
+
+in FragmentData {
+  vec3 view_position;
+  vec3 view_normal;
+  vec2 uv;
+  vec3 albedo;
+  flat vec3 face_normal;
+} f_in;
+
+uniform usampler2D u_centre_normal;
+uniform usampler2D u_centre_primitive;
+uniform sampler2D u_centre_depth;
+uniform mat4 u_inverse_projection;  // unjittered
+uniform vec2 u_viewport;
+uniform uint u_primitive_base;
+uniform ivec2 u_neighbour;  // nearest outside pixel of this subsample, window space
+uniform float u_threshold;
+
+layout(location = 0) out uint o_code;
+
+vec3 centre_position(ivec2 pixel) {
+  return rsaa_view_position(vec2(pixel) + 0.5, texelFetch(u_centre_depth, pixel, 0).x,
+                            u_inverse_projection, u_viewport);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  // Shortcut: the triangle that covers this subsample also covers the centre.
+  if (texelFetch(u_centre_primitive, pixel, 0).x == u_primitive_base + uint(gl_PrimitiveID) + 1u) {
+    o_code = 1u;  // decodes to 0
+    return;
+  }
+  uvec2 centre_normal = texelFetch(u_centre_normal, pixel, 0).xy;
+  if (!rsaa_is_surface(centre_normal)) {
+    o_code = RSAA_CODE_MAX;  // a surface subsample in a background pixel: different
+    return;
+  }
+  vec3 ps = f_in.view_position;
+  vec3 ns = f_in.face_normal;
+  float similarity = rsaa_similarity(ps, ns, centre_position(pixel), rsaa_decode_normal(centre_normal));
+#if RSAA_AUTH == 2
+  // Pre-pass authentication (paper section 2.4): a subsample that looks different from the
+  // centre but even more different from its nearest outside pixel joins the similar cluster.
+  ivec2 outside = pixel + u_neighbour;
+  if (similarity > 0.5 * u_threshold && all(greaterThanEqual(outside, ivec2(0))) &&
+      all(lessThan(outside, ivec2(u_viewport)))) {
+    uvec2 outside_normal = texelFetch(u_centre_normal, outside, 0).xy;
+    if (rsaa_is_surface(outside_normal)) {
+      float to_outside = rsaa_similarity(ps, ns, centre_position(outside),
+                                         rsaa_decode_normal(outside_normal));
+      if (to_outside > similarity) similarity = 0.0;
+    }
+  }
+#endif
+  o_code = rsaa_encode_similarity(similarity);
+}

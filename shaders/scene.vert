@@ -1,0 +1,28 @@
+// Scene vertices: view-space position for the similarity measures, clip position (optionally
+// jittered by a sub-pixel translation in NDC), smooth normal, uv and albedo for shading.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+layout(location = 3) in vec3 a_albedo;
+
+uniform mat4 u_view;
+uniform mat4 u_projection;
+uniform vec2 u_jitter_ndc;  // translation of the image, NDC units
+
+out VertexData {
+  vec3 view_position;
+  vec3 view_normal;
+  vec2 uv;
+  vec3 albedo;
+} v_out;
+
+void main() {
+  vec4 view = u_view * vec4(a_position, 1.0);
+  v_out.view_position = view.xyz;
+  v_out.view_normal = mat3(u_view) * a_normal;
+  v_out.uv = a_uv;
+  v_out.albedo = a_albedo;
+  vec4 clip = u_projection * view;
+  clip.xy += u_jitter_ndc * clip.w;
+  gl_Position = clip;
+}

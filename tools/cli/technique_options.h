@@ -1,0 +1,24 @@
+// The technique options shared by the commands that render (render, view, bench).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "runtime/technique.h"
+
+namespace rsaa::cli {
+
+inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
+  cmd->add_option("--technique", o.technique, "noaa | msaa | ssaa | rsaa")->capture_default_str();
+  cmd->add_option("--samples", o.samples,
+                  "msaa: 4 (hardware) | 8 (jittered); ssaa: 16 | 64; rsaa: 4 | 8 (default 8)");
+  cmd->add_option("--similarity", o.similarity, "rsaa: sadp | depth")->capture_default_str();
+  cmd->add_option("--auth", o.auth, "rsaa authentication: 0 none, 1 post-pass, 2 pre-pass")
+      ->capture_default_str();
+  cmd->add_option("--threshold", o.threshold,
+                  "rsaa similarity threshold (default 0.4: SADP units, or percent of depth)");
+  cmd->add_option("--pattern", o.pattern, "rsaa 4x sample pattern: gl4x (driver, default) | d3d4x");
+  cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
+      ->capture_default_str();
+}
+
+}  // namespace rsaa::cli
