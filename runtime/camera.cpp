@@ -22,7 +22,8 @@ Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float fov_y_degree
   c.fov_y_degrees = fov_y_degrees;
   c.target = 0.5f * (lo + hi);
   const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
-  const float distance = radius / std::sin(glm::radians(0.5f * fov_y_degrees)) * 1.05f;
+  // The bounding sphere just inside the view: boxes rarely fill their sphere.
+  const float distance = radius / std::sin(glm::radians(0.5f * fov_y_degrees)) * 0.8f;
   c.eye = c.target + distance * glm::normalize(glm::vec3(0.55f, 0.45f, 1.0f));
   c.near_plane = std::max(distance - 1.5f * radius, distance * 1e-3f);
   c.far_plane = distance + 1.5f * radius;

@@ -56,7 +56,6 @@ Scene load_model(const std::string& path) {
   if (!std::filesystem::exists(path)) throw std::runtime_error(what + ": file not found");
   if (std::filesystem::is_directory(path)) throw std::runtime_error(what + ": is a directory");
   Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const aiScene* ai = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
                 aiProcess_SortByPType | aiProcess_JoinIdenticalVertices | aiProcess_FindDegenerates);

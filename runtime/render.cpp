@@ -41,7 +41,11 @@ Image render_frame(const GpuScene& scene, const Camera& camera, const TechniqueO
   validate_size(width, height);
   auto technique = make_technique(options, width, height);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
-  technique->render(scene, make_view(camera, width, height), output.get());
+  const View view = make_view(camera, width, height);
+  // A first, untimed frame: llvmpipe compiles shaders at their first draw.
+  technique->render(scene, view, output.get());
+  technique->take_pass_times();
+  technique->render(scene, view, output.get());
   Image image = read_back_image(output.get(), width, height);
   if (stats) {
     stats->label = technique_label(options);

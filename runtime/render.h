@@ -31,7 +31,8 @@ struct RenderStats {
   double bytes_per_pixel = 0.0;
 };
 
-// Needs a current GL context.
+// Needs a current GL context. Renders two frames, the first untimed (warm-up), and returns
+// the second with its pass times.
 Image render_frame(const GpuScene& scene, const Camera& camera, const TechniqueOptions& options,
                    int width, int height, RenderStats* stats = nullptr);
 

@@ -1,0 +1,96 @@
+// rsaa render / compare as a user runs them: images written, and clear errors without partial
+// output on bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "core/image_io.h"
+#include "tests/test_util.h"
+
+namespace rsaa {
+namespace {
+
+using test::run_rsaa;
+using test::TempDir;
+
+TEST(RenderCli, WritesPngAndExrAndComparesThem) {
+  TempDir dir;
+  const std::string size = " --width 64 --height 48 ";
+  auto r = run_rsaa("render --technique rsaa --auth 1" + size + "--out " + dir.file("a.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("post-process"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bytes/pixel"), std::string::npos) << r.output;
+  r = run_rsaa("render --technique noaa" + size + "--out " + dir.file("b.exr"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Image a = read_image(dir.file("a.png"));
+  EXPECT_EQ(a.width, 64);
+  EXPECT_EQ(a.height, 48);
+
+  r = run_rsaa("compare --json " + dir.file("a.png") + " " + dir.file("a.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(nlohmann::json::parse(r.output).at("psnr_db"), "inf");
+  r = run_rsaa("compare --json " + dir.file("a.png") + " " + dir.file("b.exr"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  EXPECT_GT(j.at("psnr_db").get<double>(), 15.0);
+  EXPECT_LE(j.at("ssim").get<double>(), 1.0);
+}
+
+TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
+  TempDir dir;
+  const std::string out = dir.file("out.png");
+  test::write_text(dir.file("junk.obj"), "this is not a model\n\x01\x02\n");
+  test::write_text(dir.file("empty.gltf"), "");
+  struct Bad {
+    std::string args, message;
+  };
+  for (const Bad& bad : std::vector<Bad>{
+           {"--scene /no/such/model.obj", "'/no/such/model.obj': file not found"},
+           {"--scene " + dir.path(), "is a directory"},
+           {"--scene /usr/share/assimp/models/OBJ/testpoints.obj", "no triangles"},
+           {"--scene " + dir.file("junk.obj"), "junk.obj"},
+           {"--scene " + dir.file("empty.gltf"), "empty.gltf"},
+           {"--scene builtin:nope", "unknown built-in scene 'builtin:nope'"},
+           {"--camera 1,2,3", "expected ex,ey,ez,tx,ty,tz"},
+           {"--camera 0,0,0,0,0,0", "eye equals target"},
+           {"--camera 0,0,5,0,0,0,200", "fov"},
+           {"--camera 0,0,5,0,0,x", "'x' is not a number"},
+           {"--width 0 --height 24", "image size 0x24"},
+           {"--width 32 --height 100000", "outside 1..8192"},
+           {"--technique fxaa", "unknown technique 'fxaa'"},
+           {"--technique rsaa --auth 3", "--auth"},
+           {"--technique rsaa --samples 16", "--samples must be 4 or 8"},
+           {"--technique rsaa --similarity normals", "--similarity"},
+           {"--technique ssaa --samples 8", "16 or 64"},
+           {"--technique rsaa --code-bits 12", "--code-bits"},
+       }) {
+    const std::string size = bad.args.find("--width") == std::string::npos ? "--width 32 --height 24 " : "";
+    const auto r = run_rsaa("render " + size + bad.args + " --out " + out);
+    EXPECT_NE(r.exit_code, 0) << bad.args;
+    EXPECT_NE(r.output.find(bad.message), std::string::npos) << bad.args << "\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << bad.args;
+  }
+  auto r = run_rsaa("render --width 8 --height 8 --out /no/such/dir/x.png");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("/no/such/dir/x.png"), std::string::npos) << r.output;
+  r = run_rsaa("render --width 8 --height 8 --out " + dir.file("x.unknownext"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 2);  // inputs only
+}
+
+TEST(CompareCli, RejectsMissingAndMismatchedImages) {
+  TempDir dir;
+  ASSERT_EQ(run_rsaa("render --width 16 --height 16 --out " + dir.file("a.png")).exit_code, 0);
+  ASSERT_EQ(run_rsaa("render --width 16 --height 8 --out " + dir.file("b.png")).exit_code, 0);
+  auto r = run_rsaa("compare " + dir.file("a.png") + " " + dir.file("b.png"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("differ in size"), std::string::npos) << r.output;
+  r = run_rsaa("compare " + dir.file("a.png") + " " + dir.file("missing.png"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("missing.png"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace rsaa
