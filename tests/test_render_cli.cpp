@@ -94,3 +94,35 @@ TEST(CompareCli, RejectsMissingAndMismatchedImages) {
 
 }  // namespace
 }  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// The window under Xvfb: switch technique with keys, screenshot the window, and find exactly
+// what `rsaa render` makes headless.
+TEST(ViewCli, SwitchesTechniquesAndTakesScreenshotsUnderXvfb) {
+  TempDir dir;
+  const std::string size = " --width 96 --height 72 ";
+  const auto r = test::run_command("xvfb-run -a -s '-screen 0 640x480x24' " + std::string(RSAA_BINARY) +
+                                   " view" + size + "--keys '6P1P7PQ' --screenshot " +
+                                   dir.file("shot-%d.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("screenshot " + dir.file("shot-2.png") + ": noaa"), std::string::npos) << r.output;
+  const std::pair<const char*, const char*> expected[] = {
+      {"shot-1.png", "--technique rsaa --samples 8"},
+      {"shot-2.png", "--technique noaa"},
+      {"shot-3.png", "--technique rsaa --samples 4"}};
+  for (const auto& [shot, technique] : expected) {
+    ASSERT_TRUE(std::filesystem::exists(dir.file(shot))) << shot << "\n" << r.output;
+    ASSERT_EQ(run_rsaa(std::string("render ") + technique + size + "--out " + dir.file("headless.png")).exit_code, 0);
+    const auto c = run_rsaa("compare --json " + dir.file(shot) + " " + dir.file("headless.png"));
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    EXPECT_EQ(nlohmann::json::parse(c.output).at("psnr_db"), "inf") << shot;
+  }
+  const auto bad = test::run_command("xvfb-run -a " + std::string(RSAA_BINARY) + " view --keys '6#'");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("no key '#'"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace rsaa

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   add(rsaa::cli::add_eval_table_command);
   add(rsaa::cli::add_render_command);
   add(rsaa::cli::add_compare_command);
+  add(rsaa::cli::add_view_command);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,202 @@
+// rsaa view: a GLFW window that shows one technique at a time, switched with keys, with
+// screenshots on request. --keys replays key presses (for scripted runs and tests).
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "core/colour.h"
+#include "core/image_io.h"
+#include "runtime/gl_context.h"
+#include "runtime/render.h"
+#include "runtime/scene.h"
+#include "runtime/scene_renderer.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/technique_options.h"
+
+namespace rsaa::cli {
+namespace {
+
+TechniqueOptions technique_named(const char* name, int samples) {
+  TechniqueOptions o;
+  o.technique = name;
+  o.samples = samples;
+  return o;
+}
+
+struct ViewArgs {
+  std::string scene = "builtin:default";
+  TechniqueOptions technique = technique_named("rsaa", 0);
+  int width = 800, height = 600;
+  std::string camera;
+  std::string screenshot = "rsaa-view-%d.png";
+  std::string keys;
+};
+
+const char* kHelp =
+    "keys: 1 noaa, 2 msaa 4x, 3 msaa 8x, 4 ssaa 16x, 5 ssaa 64x, 6 rsaa 8x, 7 rsaa 4x,\n"
+    "      S/D similarity sadp/depth, A cycle auth 0/1/2, P screenshot, Q or Esc quit\n";
+
+class Viewer {
+ public:
+  Viewer(const ViewArgs& args, GLFWwindow* window, const Scene& scene, const Camera& camera)
+      : args_(args), window_(window), gpu_scene_(scene), camera_(camera), options_(args.technique),
+        output_(gl::make_texture_2d(GL_RGBA16F, args.width, args.height)),
+        present_(make_fullscreen_program("present.frag", "")) {
+    rebuild();
+  }
+
+  // Returns false when the key asks to quit.
+  bool key(int k) {
+    TechniqueOptions o = options_;
+    switch (k) {
+      case GLFW_KEY_1: o = technique_named("noaa", 0); break;
+      case GLFW_KEY_2: o = technique_named("msaa", 4); break;
+      case GLFW_KEY_3: o = technique_named("msaa", 8); break;
+      case GLFW_KEY_4: o = technique_named("ssaa", 16); break;
+      case GLFW_KEY_5: o = technique_named("ssaa", 64); break;
+      case GLFW_KEY_6: o.technique = "rsaa"; o.samples = 8; o.pattern.clear(); break;
+      case GLFW_KEY_7: o.technique = "rsaa"; o.samples = 4; break;
+      case GLFW_KEY_S: o.similarity = "sadp"; break;
+      case GLFW_KEY_D: o.similarity = "depth"; break;
+      case GLFW_KEY_A: o.auth = (o.auth + 1) % 3; break;
+      case GLFW_KEY_P: screenshot(); return true;
+      case GLFW_KEY_Q:
+      case GLFW_KEY_ESCAPE: return false;
+      default: return true;
+    }
+    if (o.technique != "rsaa") o.similarity = "sadp", o.auth = 0;
+    options_ = o;
+    rebuild();
+    return true;
+  }
+
+  void draw() {
+    technique_->render(gpu_scene_, make_view(camera_, args_.width, args_.height), output_.get());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, args_.width, args_.height);
+    glUseProgram(present_.get());
+    glProgramUniform1i(present_.get(), glGetUniformLocation(present_.get(), "u_image"), 0);
+    glBindTextureUnit(0, output_.get());
+    draw_fullscreen_triangle();
+    gl::check("presenting a frame");
+  }
+
+  // Reads the window's back buffer (what is shown) into a PNG.
+  void screenshot() {
+    draw();
+    std::vector<std::uint8_t> rgb(std::size_t(args_.width) * args_.height * 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, args_.width, args_.height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+    Image image(args_.width, args_.height);
+    for (int y = 0; y < args_.height; ++y)
+      for (int x = 0; x < args_.width; ++x) {
+        const std::uint8_t* p = &rgb[(std::size_t(args_.height - 1 - y) * args_.width + x) * 3];
+        image.at(x, y) = {srgb_to_linear(p[0] / 255.0f), srgb_to_linear(p[1] / 255.0f),
+                          srgb_to_linear(p[2] / 255.0f)};
+      }
+    char name[512];
+    std::snprintf(name, sizeof name, args_.screenshot.c_str(), ++screenshots_);
+    write_image(name, image);
+    std::printf("screenshot %s: %s\n", name, technique_label(options_).c_str());
+    std::fflush(stdout);
+  }
+
+ private:
+  void rebuild() {
+    technique_ = make_technique(options_, args_.width, args_.height);
+    const std::string title = "rsaa view: " + technique_label(options_);
+    glfwSetWindowTitle(window_, title.c_str());
+    std::printf("showing %s\n", technique_label(options_).c_str());
+    std::fflush(stdout);
+  }
+
+  const ViewArgs& args_;
+  GLFWwindow* window_;
+  GpuScene gpu_scene_;
+  Camera camera_;
+  TechniqueOptions options_;
+  std::unique_ptr<Technique> technique_;
+  gl::Texture output_;
+  gl::Program present_;
+  int screenshots_ = 0;
+};
+
+int key_of(char c) {
+  if (c >= '0' && c <= '9') return GLFW_KEY_0 + (c - '0');
+  if (c >= 'a' && c <= 'z') return GLFW_KEY_A + (c - 'a');
+  if (c >= 'A' && c <= 'Z') return GLFW_KEY_A + (c - 'A');
+  throw std::invalid_argument(std::string("--keys: no key '") + c + "'");
+}
+
+int run_view(const ViewArgs& a) {
+  validate(a.technique);
+  validate_size(a.width, a.height);
+  for (char c : a.keys)
+    if (c != ' ' && c != ',') key_of(c);
+  const Scene scene = load_scene(a.scene);
+  std::optional<Camera> requested;
+  if (!a.camera.empty()) requested = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
+  if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (is there a display? try xvfb-run)");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
+  GLFWwindow* window = glfwCreateWindow(a.width, a.height, "rsaa view", nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    throw std::runtime_error("cannot open a " + std::to_string(a.width) + "x" +
+                             std::to_string(a.height) + " OpenGL 4.5 window");
+  }
+  glfwMakeContextCurrent(window);
+  int status = 0;
+  {
+    gl::require_gl45();
+    std::printf("%s", kHelp);
+    Viewer viewer(a, window, scene, choose_camera(scene, requested));
+    static std::vector<int> pressed;
+    glfwSetKeyCallback(window, [](GLFWwindow*, int key, int, int action, int) {
+      if (action == GLFW_PRESS) pressed.push_back(key);
+    });
+    std::vector<int> scripted;
+    for (char c : a.keys)
+      if (c != ' ' && c != ',') scripted.push_back(key_of(c));
+    std::size_t next = 0;
+    bool running = true;
+    while (running && !glfwWindowShouldClose(window)) {
+      viewer.draw();
+      glfwSwapBuffers(window);
+      glfwPollEvents();
+      if (next < scripted.size()) pressed.push_back(scripted[next++]);
+      for (int k : pressed) running = running && viewer.key(k);
+      pressed.clear();
+      if (!a.keys.empty() && next == scripted.size() && running) running = false;  // script done
+    }
+  }
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return status;
+}
+
+}  // namespace
+
+Action add_view_command(CLI::App& app) {
+  auto args = std::make_shared<ViewArgs>();
+  CLI::App* cmd = app.add_subcommand("view", std::string("Open a window showing a scene; switch techniques with keys\n") + kHelp);
+  cmd->add_option("--scene", args->scene, "builtin:NAME or a model file")->capture_default_str();
+  add_technique_options(cmd, args->technique);
+  cmd->add_option("--width", args->width, "Window width")->capture_default_str();
+  cmd->add_option("--height", args->height, "Window height")->capture_default_str();
+  cmd->add_option("--camera", args->camera, "ex,ey,ez,tx,ty,tz[,fov]");
+  cmd->add_option("--screenshot", args->screenshot, "Screenshot file pattern (printf %d = count)")
+      ->capture_default_str();
+  cmd->add_option("--keys", args->keys,
+                  "Press these keys one per frame, then quit (e.g. \"6P2PQ\"); for scripted runs");
+  return [args] { return run_view(*args); };
+}
+
+}  // namespace rsaa::cli

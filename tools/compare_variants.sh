@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Renders the references and all 12 RSAA variants of a scene and compares each with 64x SSAA
+# (rsaa compare). Prints a Markdown table and keeps the images in OUT_DIR.
+# Usage: tools/compare_variants.sh [SCENE] [WIDTH] [HEIGHT] [OUT_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scene=${1:-builtin:default}
+width=${2:-640}
+height=${3:-480}
+name=$(basename "${scene#builtin:}")
+name=${name%.*}
+out=${4:-out/compare/$name}
+mkdir -p "$out"
+rsaa=./build/rsaa
+
+techniques=(
+  "noaa" "msaa --samples 4" "msaa --samples 8" "ssaa --samples 16"
+)
+for samples in 4 8; do
+  for similarity in sadp depth; do
+    for auth in 0 1 2; do
+      techniques+=("rsaa --samples $samples --similarity $similarity --auth $auth")
+    done
+  done
+done
+
+file_of() { echo "$out/$(echo "$1" | sed 's/--samples /x/; s/--similarity //; s/--auth /auth/; s/ //g').png"; }
+
+echo "rendering $scene at ${width}x${height} into $out" >&2
+$rsaa render --scene "$scene" --technique ssaa --samples 64 --width "$width" --height "$height" \
+  --out "$out/reference.png" >/dev/null
+noaa_psnr=""
+noaa_ms=""
+echo "| technique | PSNR dB | gain over noaa | SSIM | luma error > 1/64 | GL ms (ratio to noaa) | bytes/px |"
+echo "| --- | --- | --- | --- | --- | --- | --- |"
+for t in "${techniques[@]}"; do
+  file=$(file_of "$t")
+  # shellcheck disable=SC2086
+  log=$($rsaa render --scene "$scene" --technique $t --width "$width" --height "$height" --out "$file")
+  label=$(echo "$log" | head -1 | cut -d: -f1)
+  ms=$(echo "$log" | awk '/ ms$/ {sum += $(NF-1)} END {printf "%.1f", sum}')
+  bytes=$(echo "$log" | awk '/bytes\/pixel/ {print $2}')
+  read -r psnr ssim luma < <($rsaa compare "$file" "$out/reference.png" | awk 'NR == 2 {print $2, $5, $10}')
+  luma=${luma%\%}
+  [ -n "$noaa_psnr" ] || { noaa_psnr=$psnr; noaa_ms=$ms; }
+  gain=$(awk -v a="$psnr" -v b="$noaa_psnr" 'BEGIN {printf "%+.2f", a - b}')
+  ratio=$(awk -v a="$ms" -v b="$noaa_ms" 'BEGIN {printf "%.2f", a / b}')
+  echo "| $label | $psnr | $gain | $ssim | $luma% | $ms ($ratio) | $bytes |"
+done | tee "$out/table.md"
