@@ -31,6 +31,7 @@ $rsaa render --scene "$scene" --technique ssaa --samples 64 --width "$width" --h
   --out "$out/reference.png" >/dev/null
 noaa_psnr=""
 noaa_ms=""
+{
 echo "| technique | PSNR dB | gain over noaa | SSIM | luma error > 1/64 | GL ms (ratio to noaa) | bytes/px |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
 for t in "${techniques[@]}"; do
@@ -46,4 +47,5 @@ for t in "${techniques[@]}"; do
   gain=$(awk -v a="$psnr" -v b="$noaa_psnr" 'BEGIN {printf "%+.2f", a - b}')
   ratio=$(awk -v a="$ms" -v b="$noaa_ms" 'BEGIN {printf "%.2f", a / b}')
   echo "| $label | $psnr | $gain | $ssim | $luma% | $ms ($ratio) | $bytes |"
-done | tee "$out/table.md"
+done
+} | tee "$out/table.md"
