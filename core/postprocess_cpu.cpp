@@ -1,5 +1,6 @@
 #include "core/postprocess_cpu.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -23,7 +24,10 @@ Image apply_offset_table(const Image& colour, const std::vector<Mask>& masks,
                                     table.pattern.name);
       if (m == all) continue;
       const Vec2 d = table.offsets[m];
-      out.at(x, y) = bilinear_fetch(colour, x + d.x, y + d.y);
+      const Rgb fetched = bilinear_fetch(colour, x + d.x, y + d.y);
+      // A non-finite neighbour must not spread: keep the pixel's own colour then.
+      if (std::isfinite(fetched.r) && std::isfinite(fetched.g) && std::isfinite(fetched.b))
+        out.at(x, y) = fetched;
     }
   }
   return out;

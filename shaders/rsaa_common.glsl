@@ -37,12 +37,15 @@ vec3 rsaa_view_position(vec2 window_xy, float depth, mat4 inverse_projection, ve
 
 // ---- similarity measures (0 = same surface; larger = more different)
 
-// SADP (paper eq. 1): |n1 . r| + |n2 . r| over |r|, r from one point to the other. Coincident
-// points (|r| below 1e-12 of the scene scale) are the same surface: 0.
+// SADP (paper eq. 1): |n1 . r| + |n2 . r| over |r|, r from one point to the other. r is first
+// scaled by its largest component so that neither tiny nor huge distances under- or overflow.
+// Points closer than 1e-12 (any unit) are the same point: 0. Normals are expected to be unit
+// vectors; SADP scales with their lengths. A NaN input gives NaN (encoded as "similar").
 float rsaa_sadp(vec3 r12, vec3 n1, vec3 n2) {
-  float len = length(r12);
-  if (!(len > 1e-12)) return 0.0;
-  return (abs(dot(n1, r12)) + abs(dot(n2, r12))) / len;
+  float largest = max(abs(r12.x), max(abs(r12.y), abs(r12.z)));
+  if (!(largest > 1e-12)) return isnan(largest) ? largest : 0.0;
+  vec3 u = r12 / largest;
+  return (abs(dot(n1, u)) + abs(dot(n2, u))) / length(u);
 }
 
 // Depth alternative: relative view-space depth difference, in percent of the nearer depth.
@@ -72,7 +75,10 @@ const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
 const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
 #endif
 
+// A NaN similarity (broken normals or positions) encodes as "same surface": the pixel is left
+// alone rather than resampled from a guess.
 uint rsaa_encode_similarity(float value) {
+  if (isnan(value)) return 1u;
   float scaled = clamp(value, 0.0, 4.0e9) * RSAA_CODE_SCALE;
   return scaled >= float(RSAA_CODE_MAX - 1u) ? RSAA_CODE_MAX : uint(scaled) + 1u;
 }

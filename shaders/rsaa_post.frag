@@ -59,7 +59,9 @@ void main() {
       if (to_outside - similarity[fs] > similarity[fs]) offset *= 0.5;
     }
 #endif
-    colour = texture(u_colour, (gl_FragCoord.xy + offset) / u_viewport);
+    vec4 fetched = texture(u_colour, (gl_FragCoord.xy + offset) / u_viewport);
+    // As the CPU reference: a NaN or infinite neighbour never spreads into this pixel.
+    if (!any(isnan(fetched)) && !any(isinf(fetched))) colour = fetched;
   }
   o_colour = colour;
 #ifdef RSAA_OUTPUT_MASK

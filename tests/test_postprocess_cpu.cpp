@@ -3,6 +3,8 @@
 
 #include "core/postprocess_cpu.h"
 
+#include <cmath>
+
 namespace rsaa {
 namespace {
 
@@ -52,6 +54,30 @@ TEST(BilinearFetch, OneByOneImageAndExactCentres) {
   const Image img = two_colour_image();
   EXPECT_FLOAT_EQ(bilinear_fetch(img, 2.0, 1.0).b, 1.0f);
   EXPECT_FLOAT_EQ(bilinear_fetch(img, 1.5, 0.0).r, 0.5f);
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+TEST(PostprocessCpu, NonFiniteColoursNeverSpreadAndHdrPassesThrough) {
+  Image img(3, 1);
+  img.at(0, 0) = {std::nanf(""), 0, 0};
+  img.at(1, 0) = {0.5f, 0.5f, 0.5f};
+  img.at(2, 0) = {4.0f, -1.0f, 2.0f};  // HDR and negative
+  OffsetTable t = fallback_table(builtin_pattern("d3d4x"));
+  t.offsets[1] = {-0.5, 0.0};  // towards the NaN pixel
+  t.offsets[2] = {0.5, 0.0};   // towards the HDR pixel
+  std::vector<Mask> masks = {15, 1, 15};
+  Image out = apply_offset_table(img, masks, t);
+  EXPECT_FLOAT_EQ(out.at(1, 0).r, 0.5f);  // kept its own colour
+  masks[1] = 2;
+  out = apply_offset_table(img, masks, t);
+  EXPECT_FLOAT_EQ(out.at(1, 0).r, 2.25f);
+  EXPECT_FLOAT_EQ(out.at(1, 0).g, -0.25f);
+  EXPECT_TRUE(std::isnan(out.at(0, 0).r));  // a bad pixel stays itself, untouched
 }
 
 }  // namespace
