@@ -1,6 +1,10 @@
 #include "runtime/scene.h"
 
+#include <chrono>
+#include <future>
 #include <limits>
+#include <memory>
+#include <thread>
 
 namespace rsaa {
 
@@ -20,6 +24,17 @@ Scene load_scene(const std::string& spec) {
   const std::string prefix = "builtin:";
   if (spec.rfind(prefix, 0) == 0) return builtin_scene(spec.substr(prefix.size()));
   return load_model(spec);
+}
+
+Scene load_scene_within(const std::string& spec, double seconds) {
+  auto task = std::make_shared<std::packaged_task<Scene()>>([spec] { return load_scene(spec); });
+  std::future<Scene> result = task->get_future();
+  std::thread([task] { (*task)(); }).detach();
+  if (result.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready)
+    throw std::runtime_error("'" + spec + "': loading did not finish within " +
+                             std::to_string(int(seconds)) + " s (a malformed file can make the "
+                             "model importer loop forever)");
+  return result.get();
 }
 
 Camera choose_camera(const Scene& scene, const std::optional<Camera>& requested) {

@@ -54,6 +54,12 @@ const std::vector<std::string>& builtin_scene_names();
 // unknown built-in, missing/unreadable file, no triangles, non-finite positions.
 Scene load_scene(const std::string& spec);
 
+// load_scene with a time limit: some broken files make assimp 5.2 loop forever (a PLY header
+// cut inside a property list does). The loader runs on its own thread; past the limit this
+// throws std::runtime_error naming the file, and the stuck thread is left behind, so the caller
+// should end the process soon (the command line does).
+Scene load_scene_within(const std::string& spec, double seconds);
+
 Scene builtin_scene(const std::string& name);
 Scene load_model(const std::string& path);
 

@@ -183,3 +183,54 @@ TEST_F(Runtime, ExtremeSizesRender) {
 
 }  // namespace
 }  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+TEST_F(Runtime, NonFiniteColoursDoNotSpreadInTheGlPostProcess) {
+  const Scene scene = load_scene("builtin:default");
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
+  SceneRenderer renderer;
+  const gl::Texture colour = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight, GL_LINEAR);
+  const gl::Texture normal = gl::make_texture_2d(GL_RG16UI, kWidth, kHeight);
+  const gl::Texture primitive = gl::make_texture_2d(GL_R32UI, kWidth, kHeight);
+  const gl::Texture depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, kWidth, kHeight);
+  const gl::Framebuffer gbuffer =
+      gl::make_framebuffer({{colour.get()}, {normal.get()}, {primitive.get()}}, {depth.get()});
+  clear_to_background(gbuffer.get(), gpu);
+  const GLuint zero[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferuiv(gbuffer.get(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferuiv(gbuffer.get(), GL_COLOR, 2, zero);
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer.get());
+  SceneRenderer::draw(gpu, view, {0, 0}, renderer.gbuffer_program());
+  // Row 60 becomes NaN, row 61 infinite, row 62 HDR.
+  std::vector<float> nan_row(kWidth * 4, std::nanf("")), inf_row(kWidth * 4, INFINITY),
+      hdr_row(kWidth * 4, 50.0f);
+  glTextureSubImage2D(colour.get(), 0, 0, 60, kWidth, 1, GL_RGBA, GL_FLOAT, nan_row.data());
+  glTextureSubImage2D(colour.get(), 0, 0, 61, kWidth, 1, GL_RGBA, GL_FLOAT, inf_row.data());
+  glTextureSubImage2D(colour.get(), 0, 0, 62, kWidth, 1, GL_RGBA, GL_FLOAT, hdr_row.data());
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  const RsaaFrame frame{colour.get(), normal.get(), primitive.get(), depth.get(),
+                        kWidth, kHeight, view.inverse_projection()};
+  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
+    SceneRenderer::draw(gpu, view, jitter, program);
+  });
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(frame, output.get());
+  const Image out = read_back_image(output.get(), kWidth, kHeight);
+  int non_finite = 0, non_finite_elsewhere = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const Rgb p = out.at(x, y);
+      const bool bad = !std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b);
+      non_finite += bad;
+      const int gl_row = kHeight - 1 - y;
+      non_finite_elsewhere += bad && gl_row != 60 && gl_row != 61;
+    }
+  EXPECT_EQ(non_finite_elsewhere, 0);
+  EXPECT_EQ(non_finite, 2 * kWidth);  // the bad rows stay themselves
+}
+
+}  // namespace
+}  // namespace rsaa

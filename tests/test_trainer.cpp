@@ -6,6 +6,7 @@
 
 #include "core/case_set.h"
 #include "core/table_accuracy.h"
+#include "trainer/offset_fit.h"
 #include "trainer/train.h"
 
 namespace rsaa {
@@ -119,6 +120,67 @@ TEST(Trainer, MixedFitTradesALittleOneLineErrorForLessTwoLineError) {
   EXPECT_LT(mixed.table[kTwoLine].rms, 0.95 * ockham.table[kTwoLine].rms);
   EXPECT_LT(mixed.table[kMix].rms, ockham.table[kMix].rms);
   EXPECT_GE(mixed.table[kOneLine].rms, ockham.table[kOneLine].rms);
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+TEST(TrainerExtremes, LineExactlyThroughASubsampleLeavesItDissimilar) {
+  const SamplePattern p = builtin_pattern("d3d8x");
+  for (int s = 0; s < p.size(); ++s) {
+    LineCase c;
+    c.lines[0] = {p.positions[s], 0.3};  // through subsample s, not through the centre
+    ASSERT_NE(c.lines[0].side({0, 0}), 0.0);
+    EXPECT_FALSE(is_similar(c.mask(p), s)) << "a point on the line belongs to no cell";
+  }
+}
+
+TEST(TrainerExtremes, CoincidentAndNearlyParallelLines) {
+  LineCase one;
+  one.lines[0] = {{0.2, 0.1}, 1.0};
+  LineCase twice = one;
+  twice.line_count = 2;
+  twice.lines[1] = one.lines[0];
+  EXPECT_NEAR(twice.coverage(), one.coverage(), 1e-15);
+  EXPECT_EQ(twice.mask(builtin_pattern("d3d8x")), one.mask(builtin_pattern("d3d8x")));
+  for (double d : {1e-3, 1e-9, 1e-15}) {
+    LineCase wedge;
+    wedge.line_count = 2;
+    wedge.lines[0] = {{0.3, 0.0}, d};
+    wedge.lines[1] = {{-0.3, 0.0}, M_PI - d};  // crossing far outside the pixel
+    const double c = wedge.coverage();
+    EXPECT_TRUE(std::isfinite(c));
+    EXPECT_GE(c, 0.0);
+    EXPECT_LE(c, 1.0);
+  }
+}
+
+TEST(TrainerExtremes, AMaskWithOneCaseGetsAFiniteBoundedOffset) {
+  const FitCase only{Neighbourhood3x3::from_binary_code(0x1ff & ~(1u << 5)), 0.7, 1.0};
+  const OffsetFit fit = fit_offset({only});
+  EXPECT_TRUE(is_finite(fit.offset));
+  EXPECT_LE(std::abs(fit.offset.x), 1.0);
+  EXPECT_LE(std::abs(fit.offset.y), 1.0);
+  EXPECT_NEAR(fit.cost, 0.0, 1e-12);  // one case can be matched exactly
+  EXPECT_TRUE(is_finite(fit_offset({}).offset));  // no case at all: (0, 0), no crash
+}
+
+TEST(TrainerExtremes, FloatEstimatesAgreeWithDouble) {
+  // The GL post-process works in float; the trainer in double.
+  const OffsetTable t = train_offset_table(options_for("d3d8x", 20000)).table;
+  double worst = 0.0;
+  for (const CaseRecord& c : generate_cases(t.pattern, 100000, 77)) {
+    const Neighbourhood3x3 n = Neighbourhood3x3::from_binary_code(c.neighbourhood);
+    const Vec2 d = t.offsets[c.mask];
+    const float fx = float(d.x), fy = float(d.y);
+    const float as_float =
+        bilinear_in_cell<float>(n, bilinear_cell_of(fx), bilinear_cell_of(fy), fx, fy);
+    worst = std::max(worst, std::abs(double(as_float) - bilinear_estimate(n, d.x, d.y)));
+  }
+  EXPECT_LT(worst, 1e-6);
 }
 
 }  // namespace

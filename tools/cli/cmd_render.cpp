@@ -24,7 +24,7 @@ struct RenderArgs {
 int run_render(const RenderArgs& a) {
   validate(a.technique);
   validate_size(a.width, a.height);
-  const Scene scene = load_scene(a.scene);
+  const Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
   std::optional<Camera> camera;
   if (!a.camera.empty()) camera = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   gl::HeadlessContext context;

@@ -138,7 +138,7 @@ int run_view(const ViewArgs& a) {
   validate_size(a.width, a.height);
   for (char c : a.keys)
     if (c != ' ' && c != ',') key_of(c);
-  const Scene scene = load_scene(a.scene);
+  const Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
   std::optional<Camera> requested;
   if (!a.camera.empty()) requested = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (is there a display? try xvfb-run)");

@@ -1,5 +1,6 @@
 // rsaa: one executable, one subcommand per job (DESIGN.md section 4).
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <map>
 #include <string>
@@ -31,6 +32,8 @@ int main(int argc, char** argv) {
     return actions.at(chosen)();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rsaa %s: error: %s\n", chosen->get_name().c_str(), e.what());
-    return 1;
+    std::fflush(nullptr);
+    // Leave at once: a scene loader that timed out may still be running on its own thread.
+    std::_Exit(1);
   }
 }

@@ -7,6 +7,9 @@
 
 namespace rsaa::cli {
 
+// Longest a scene file may take to load before the command gives up with an error.
+constexpr double kSceneLoadSeconds = 120.0;
+
 inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
   cmd->add_option("--technique", o.technique, "noaa | msaa | ssaa | rsaa")->capture_default_str();
   cmd->add_option("--samples", o.samples,
