@@ -152,3 +152,57 @@ TEST_F(GlslExtremes, CodesRoundTripAndSaturate) {
 
 }  // namespace
 }  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// rsaa_classify for 8 similarities and a threshold per case.
+std::vector<std::uint32_t> classify(const std::vector<std::array<float, 9>>& cases) {
+  const std::string source = gl::shader_source("rsaa_common.glsl") + R"(
+layout(local_size_x = 1) in;
+layout(std430, binding = 0) readonly buffer Cases { float values[]; };
+layout(std430, binding = 1) writeonly buffer Masks { uint masks[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  float s[RSAA_SAMPLE_COUNT];
+  for (int k = 0; k < RSAA_SAMPLE_COUNT; ++k) s[k] = values[i * 9u + uint(k)];
+  float split;
+  masks[i] = rsaa_classify(s, values[i * 9u + 8u], split);
+})";
+  const gl::Program program =
+      gl::make_program({{GL_COMPUTE_SHADER, source}}, "#define RSAA_SAMPLE_COUNT 8\n", "classify probe");
+  GLuint buffers[2];
+  glCreateBuffers(2, buffers);
+  const gl::Buffer in(buffers[0]), out(buffers[1]);
+  glNamedBufferStorage(in.get(), GLsizeiptr(cases.size() * sizeof(cases[0])), cases.data(), 0);
+  glNamedBufferStorage(out.get(), GLsizeiptr(cases.size() * 4), nullptr, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.get());
+  glUseProgram(program.get());
+  glDispatchCompute(GLuint(cases.size()), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<std::uint32_t> masks(cases.size());
+  glGetNamedBufferSubData(out.get(), 0, GLsizeiptr(masks.size() * 4), masks.data());
+  gl::check("classify probe");
+  return masks;
+}
+
+TEST_F(GlslExtremes, ClassificationAndItsThresholdLimits) {
+  const auto m = classify({
+      {0, 0, 0, 0, 0, 0, 0, 0, 0.4f},                             // no edge: all similar
+      {0.4f, 0.4f, 0.4f, 0.5f, 1.1f, 1.2f, 1.2f, 1.3f, 0.4f},     // the paper's example
+      {0, 0, 0, 0, 0, 0, 0, 1e-6f, 0.0f},                         // threshold 0
+      {2, 2, 2, 2, 2, 2, 2, 2, 1e30f},                            // huge threshold: never
+      {0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.1f, 0.4f, 0.4f},     // maxsim == threshold: no edge
+      {2, 2, 2, 2, 2, 2, 2, 2, 0.4f},                             // all different: mask 0
+  });
+  EXPECT_EQ(m[0], 255u);
+  EXPECT_EQ(m[1], 0b00001111u);  // {0.4, 0.4, 0.4, 0.5} similar, as section 2.2 says
+  EXPECT_EQ(m[2], 0b01111111u);
+  EXPECT_EQ(m[3], 255u);
+  EXPECT_EQ(m[4], 255u);
+  EXPECT_EQ(m[5], 0u);
+}
+
+}  // namespace
+}  // namespace rsaa
