@@ -61,6 +61,30 @@ glm::ivec2 window_step(Vec2 sample) {
 
 }  // namespace
 
+RsaaTargets::RsaaTargets(int width, int height)
+    : width_(width),
+      height_(height),
+      colour_(gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR)),
+      normal_(gl::make_texture_2d(GL_RG16UI, width, height)),
+      primitive_(gl::make_texture_2d(GL_R32UI, width, height)),
+      depth_(gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height)),
+      framebuffer_(gl::make_framebuffer({{colour_.get()}, {normal_.get()}, {primitive_.get()}},
+                                        {depth_.get()})) {}
+
+void RsaaTargets::clear(const float background[3]) const {
+  const GLfloat colour[4] = {background[0], background[1], background[2], 1.0f};
+  const GLuint zero[4] = {0, 0, 0, 0};
+  const GLfloat far_depth = 1.0f;
+  glClearNamedFramebufferfv(framebuffer_.get(), GL_COLOR, 0, colour);
+  glClearNamedFramebufferuiv(framebuffer_.get(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferuiv(framebuffer_.get(), GL_COLOR, 2, zero);
+  glClearNamedFramebufferfv(framebuffer_.get(), GL_DEPTH, 0, &far_depth);
+}
+
+RsaaFrame RsaaTargets::frame(const glm::mat4& inverse_projection) const {
+  return {colour_.get(), normal_.get(), primitive_.get(), depth_.get(), width_, height_, inverse_projection};
+}
+
 SamplePattern query_gl_sample_pattern(int samples) {
   const gl::Texture texture = gl::make_texture_2d_multisample(GL_RGBA8, 1, 1, samples);
   const gl::Framebuffer fb = gl::make_framebuffer({{texture.get()}});

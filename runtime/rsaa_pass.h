@@ -6,7 +6,8 @@
 //   centre_normal     RG16UI: rsaa_encode_normal(geometric normal) (0 = background)
 //   centre_primitive  R32UI: unique triangle id + 1 (0 = background); drives the shortcut
 //   centre_depth      DEPTH_COMPONENT32F
-// (SceneRenderer::gbuffer_program() writes exactly these; shaders/scene_shade.frag shows how.)
+// (SceneRenderer::gbuffer_program() writes exactly these; shaders/scene_shade.frag shows how;
+// RsaaTargets allocates them.)
 // Then it calls render_subsamples() with a callback that draws its geometry once per subsample
 // with the program given (vertex attributes: 0 position, 1 normal, 2 uv, 3 albedo; uniforms
 // u_view, u_projection, u_jitter_ndc), and resolve() into its output texture.
@@ -35,6 +36,24 @@ struct RsaaFrame {
   GLuint colour = 0, centre_normal = 0, centre_primitive = 0, centre_depth = 0;
   int width = 0, height = 0;
   glm::mat4 inverse_projection{1.0f};  // unjittered
+};
+
+// The four 1x targets above, allocated, for an engine that has none of its own.
+class RsaaTargets {
+ public:
+  RsaaTargets(int width, int height);
+  // Colour to `background` (linear RGB), normal and primitive to 0 (background), depth to 1.
+  void clear(const float background[3]) const;
+  // Binds the framebuffer: colour at location 0, normal 1, primitive 2, and depth.
+  void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get()); }
+  RsaaFrame frame(const glm::mat4& inverse_projection) const;
+  static constexpr double kBytesPerPixel = 8 + 4 + 4 + 4;
+  GLuint colour() const { return colour_.get(); }
+
+ private:
+  int width_, height_;
+  gl::Texture colour_, normal_, primitive_, depth_;
+  gl::Framebuffer framebuffer_;
 };
 
 // The 4x pattern of this GL driver, in pixel space (needs a current context).

@@ -192,27 +192,20 @@ TEST_F(Runtime, NonFiniteColoursDoNotSpreadInTheGlPostProcess) {
   const GpuScene gpu(scene);
   const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
   SceneRenderer renderer;
-  const gl::Texture colour = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight, GL_LINEAR);
-  const gl::Texture normal = gl::make_texture_2d(GL_RG16UI, kWidth, kHeight);
-  const gl::Texture primitive = gl::make_texture_2d(GL_R32UI, kWidth, kHeight);
-  const gl::Texture depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, kWidth, kHeight);
-  const gl::Framebuffer gbuffer =
-      gl::make_framebuffer({{colour.get()}, {normal.get()}, {primitive.get()}}, {depth.get()});
-  clear_to_background(gbuffer.get(), gpu);
-  const GLuint zero[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferuiv(gbuffer.get(), GL_COLOR, 1, zero);
-  glClearNamedFramebufferuiv(gbuffer.get(), GL_COLOR, 2, zero);
-  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer.get());
+  const RsaaTargets targets(kWidth, kHeight);
+  const glm::vec3 background = gpu.background();
+  targets.clear(&background.x);
+  targets.bind();
   SceneRenderer::draw(gpu, view, {0, 0}, renderer.gbuffer_program());
   // Row 60 becomes NaN, row 61 infinite, row 62 HDR.
   std::vector<float> nan_row(kWidth * 4, std::nanf("")), inf_row(kWidth * 4, INFINITY),
       hdr_row(kWidth * 4, 50.0f);
-  glTextureSubImage2D(colour.get(), 0, 0, 60, kWidth, 1, GL_RGBA, GL_FLOAT, nan_row.data());
-  glTextureSubImage2D(colour.get(), 0, 0, 61, kWidth, 1, GL_RGBA, GL_FLOAT, inf_row.data());
-  glTextureSubImage2D(colour.get(), 0, 0, 62, kWidth, 1, GL_RGBA, GL_FLOAT, hdr_row.data());
+  const GLuint colour = targets.colour();
+  glTextureSubImage2D(colour, 0, 0, 60, kWidth, 1, GL_RGBA, GL_FLOAT, nan_row.data());
+  glTextureSubImage2D(colour, 0, 0, 61, kWidth, 1, GL_RGBA, GL_FLOAT, inf_row.data());
+  glTextureSubImage2D(colour, 0, 0, 62, kWidth, 1, GL_RGBA, GL_FLOAT, hdr_row.data());
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
-  const RsaaFrame frame{colour.get(), normal.get(), primitive.get(), depth.get(),
-                        kWidth, kHeight, view.inverse_projection()};
+  const RsaaFrame frame = targets.frame(view.inverse_projection());
   pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
     SceneRenderer::draw(gpu, view, jitter, program);
   });
