@@ -65,6 +65,17 @@ Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment d
   return fb;
 }
 
+GLuint CachedFramebuffer::get(const std::vector<Attachment>& colour, Attachment depth) {
+  std::vector<GLuint> key;
+  for (const Attachment& a : colour) key.insert(key.end(), {a.texture, GLuint(a.layer)});
+  key.insert(key.end(), {depth.texture, GLuint(depth.layer)});
+  if (key != key_ || !framebuffer_.get()) {
+    framebuffer_ = make_framebuffer(colour, depth);
+    key_ = key;
+  }
+  return framebuffer_.get();
+}
+
 namespace {
 
 const char* stage_name(GLenum stage) {

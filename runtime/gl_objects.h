@@ -62,6 +62,17 @@ struct Attachment {
 };
 Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth = {});
 
+// A framebuffer for caller-provided output textures, made again only when they change: a new
+// framebuffer every frame costs llvmpipe more than the frame itself (it re-specialises shaders).
+class CachedFramebuffer {
+ public:
+  GLuint get(const std::vector<Attachment>& colour, Attachment depth = {});
+
+ private:
+  std::vector<GLuint> key_;
+  Framebuffer framebuffer_;
+};
+
 // Compiles and links; `sources` per stage are concatenated after "#version 450 core" and the
 // defines. Throws GlError with the info log and the stage name.
 struct ShaderStage {

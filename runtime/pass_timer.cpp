@@ -7,11 +7,18 @@ namespace rsaa {
 void PassTimer::begin(const std::string& pass) {
   GLuint id;
   glCreateQueries(GL_TIME_ELAPSED, 1, &id);
-  entries_.push_back({pass, gl::Query(id)});
+  entries_.push_back({pass, gl::Query(id), 0.0});
+  glFinish();
+  started_ = std::chrono::steady_clock::now();
   glBeginQuery(GL_TIME_ELAPSED, id);
 }
 
-void PassTimer::end() { glEndQuery(GL_TIME_ELAPSED); }
+void PassTimer::end() {
+  glEndQuery(GL_TIME_ELAPSED);
+  glFinish();
+  entries_.back().wall_milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started_).count();
+}
 
 std::vector<PassTime> PassTimer::collect() {
   std::vector<PassTime> out;
@@ -20,8 +27,9 @@ std::vector<PassTime> PassTimer::collect() {
     glGetQueryObjectui64v(e.query.get(), GL_QUERY_RESULT, &ns);
     // Passes with the same name (the jittered passes) add up, in order of first appearance.
     auto it = std::find_if(out.begin(), out.end(), [&](const PassTime& t) { return t.pass == e.pass; });
-    if (it == out.end()) it = out.insert(out.end(), {e.pass, 0.0});
+    if (it == out.end()) it = out.insert(out.end(), {e.pass, 0.0, 0.0});
     it->milliseconds += ns * 1e-6;
+    it->wall_milliseconds += e.wall_milliseconds;
   }
   entries_.clear();
   return out;

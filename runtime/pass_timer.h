@@ -1,6 +1,9 @@
-// GL timer queries around the passes of one frame (DESIGN.md section 5: per-pass times).
+// Times of the passes of one frame (DESIGN.md section 5): GL timer queries, and the wall clock
+// between glFinish() calls. On llvmpipe the "GPU" is the CPU and its timer queries proved
+// inconsistent between techniques, so the bench ranks by the wall clock; both are reported.
 #pragma once
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -10,7 +13,8 @@ namespace rsaa {
 
 struct PassTime {
   std::string pass;
-  double milliseconds = 0.0;
+  double milliseconds = 0.0;       // GL timer query (GL_TIME_ELAPSED)
+  double wall_milliseconds = 0.0;  // wall clock between glFinish() calls around the pass
 };
 
 class PassTimer {
@@ -24,7 +28,9 @@ class PassTimer {
   struct Entry {
     std::string pass;
     gl::Query query;
+    double wall_milliseconds = 0.0;
   };
+  std::chrono::steady_clock::time_point started_;
   std::vector<Entry> entries_;
 };
 

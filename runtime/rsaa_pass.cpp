@@ -173,7 +173,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     if (!mask_output) throw std::invalid_argument("RSAA resolve: output_mask set but no mask texture");
     targets.push_back({mask_output});
   }
-  const gl::Framebuffer fb = gl::make_framebuffer(targets);
+  const GLuint fb = resolve_target_.get(targets);
   const GLuint program = post_program_.get();
   set_frame_uniforms(program, frame, settings_.threshold);
   set_uniform(program, "u_colour", 0);
@@ -184,7 +184,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   glBindTextureUnit(1, frame.centre_normal);
   glBindTextureUnit(2, frame.centre_depth);
   glBindTextureUnit(3, codes_.get());
-  glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);
   glUseProgram(program);
   draw_fullscreen_triangle();

@@ -83,6 +83,7 @@ class RsaaPass {
   gl::Texture codes_, subsample_depth_;
   std::vector<gl::Framebuffer> subsample_targets_;
   gl::Program subsample_program_, post_program_;
+  gl::CachedFramebuffer resolve_target_;
 };
 
 }  // namespace rsaa

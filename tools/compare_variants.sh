@@ -32,14 +32,14 @@ $rsaa render --scene "$scene" --technique ssaa --samples 64 --width "$width" --h
 noaa_psnr=""
 noaa_ms=""
 {
-echo "| technique | PSNR dB | gain over noaa | SSIM | luma error > 1/64 | GL ms (ratio to noaa) | bytes/px |"
+echo "| technique | PSNR dB | gain over noaa | SSIM | luma error > 1/64 | frame ms (ratio to noaa) | bytes/px |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
 for t in "${techniques[@]}"; do
   file=$(file_of "$t")
   # shellcheck disable=SC2086
   log=$($rsaa render --scene "$scene" --technique $t --width "$width" --height "$height" --out "$file")
   label=$(echo "$log" | head -1 | cut -d: -f1)
-  ms=$(echo "$log" | awk '/ ms$/ {sum += $(NF-1)} END {printf "%.1f", sum}')
+  ms=$(echo "$log" | awk '/GL timer query/ {sum += $2} END {printf "%.1f", sum}')
   bytes=$(echo "$log" | awk '/bytes\/pixel/ {print $2}')
   read -r psnr ssim luma < <($rsaa compare "$file" "$out/reference.png" | awk 'NR == 2 {print $2, $5, $10}')
   luma=${luma%\%}

@@ -22,8 +22,7 @@ class HardwareMsaa : public Technique {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     timer_.end();
     timer_.begin("resolve");
-    const gl::Framebuffer resolved = gl::make_framebuffer({{output}});
-    glBlitNamedFramebuffer(target_.get(), resolved.get(), 0, 0, view.width, view.height, 0, 0,
+    glBlitNamedFramebuffer(target_.get(), resolved_.get({{output}}), 0, 0, view.width, view.height, 0, 0,
                            view.width, view.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     timer_.end();
     gl::check("MSAA resolve");
@@ -36,6 +35,7 @@ class HardwareMsaa : public Technique {
   SceneRenderer renderer_;
   gl::Texture colour_, depth_;
   gl::Framebuffer target_;
+  gl::CachedFramebuffer resolved_;
 };
 
 }  // namespace

@@ -9,10 +9,10 @@ class NoAA : public Technique {
   NoAA(int width, int height) : depth_(gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height)) {}
 
   void render(const GpuScene& scene, const View& view, GLuint output) override {
-    const gl::Framebuffer fb = gl::make_framebuffer({{output}}, {depth_.get()});
+    const GLuint fb = target_.get({{output}}, {depth_.get()});
     timer_.begin("main");
-    clear_to_background(fb.get(), scene);
-    glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+    clear_to_background(fb, scene);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
     SceneRenderer::draw(scene, view, {0.0f, 0.0f}, renderer_.shade_program());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     timer_.end();
@@ -23,6 +23,7 @@ class NoAA : public Technique {
  private:
   SceneRenderer renderer_;
   gl::Texture depth_;
+  gl::CachedFramebuffer target_;
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 // in an RGBA32F accumulator. Serves `msaa --samples 8` (the d3d8x positions; every sample is
 // shaded, so it bounds what 8x MSAA can reach) and `ssaa --samples 16|64` (stratified jitter:
 // one uniformly placed sample per cell of a 4x4 / 8x8 grid; 64x is every metric's reference).
+#include <algorithm>
 #include <cmath>
 
 #include "core/random.h"
@@ -13,56 +14,85 @@ namespace {
 
 class JitteredSupersampling : public Technique {
  public:
+  static constexpr int kBatch = 8;  // passes rendered before each accumulation
+
   JitteredSupersampling(std::vector<Vec2> positions, int width, int height)
       : positions_(std::move(positions)),
-        pass_colour_(gl::make_texture_2d(GL_RGBA16F, width, height)),
+        batch_(int(std::min<std::size_t>(kBatch, positions_.size()))),
+        pass_colours_(gl::make_texture_2d_array(GL_RGBA16F, width, height, batch_)),
         pass_depth_(gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height)),
         accumulator_(gl::make_texture_2d(GL_RGBA32F, width, height)),
-        pass_target_(gl::make_framebuffer({{pass_colour_.get()}}, {pass_depth_.get()})),
         accumulator_target_(gl::make_framebuffer({{accumulator_.get()}})),
-        accumulate_(make_fullscreen_program("accumulate.frag", "")) {}
+        accumulate_(make_fullscreen_program("accumulate.frag", "")) {
+    for (int i = 0; i < batch_; ++i)
+      pass_targets_.push_back(gl::make_framebuffer({{pass_colours_.get(), i}}, {pass_depth_.get()}));
+  }
 
   void render(const GpuScene& scene, const View& view, GLuint output) override {
     const GLfloat zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(accumulator_target_.get(), GL_COLOR, 0, zero);
     const GLuint program = accumulate_.get();
-    glProgramUniform1i(program, glGetUniformLocation(program, "u_pass"), 0);
-    for (const Vec2& s : positions_) {
+    glProgramUniform1i(program, glGetUniformLocation(program, "u_passes"), 0);
+    for (std::size_t first = 0; first < positions_.size(); first += batch_) {
+      const int count = int(std::min<std::size_t>(batch_, positions_.size() - first));
       timer_.begin("main");
-      clear_to_background(pass_target_.get(), scene);
-      glBindFramebuffer(GL_FRAMEBUFFER, pass_target_.get());
-      SceneRenderer::draw(scene, view, jitter_ndc_for_sample(s.x, s.y, view.width, view.height),
-                          renderer_.shade_program());
+      for (int i = 0; i < count; ++i) {
+        const Vec2 s = positions_[first + i];
+        clear_to_background(pass_targets_[i].get(), scene);
+        glBindFramebuffer(GL_FRAMEBUFFER, pass_targets_[i].get());
+        SceneRenderer::draw(scene, view, jitter_ndc_for_sample(s.x, s.y, view.width, view.height),
+                            renderer_.shade_program());
+      }
       timer_.end();
       timer_.begin("resolve");
-      glBindFramebuffer(GL_FRAMEBUFFER, accumulator_target_.get());
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);
-      glProgramUniform1f(program, glGetUniformLocation(program, "u_weight"), 1.0f / positions_.size());
-      glBindTextureUnit(0, pass_colour_.get());
-      glUseProgram(program);
-      draw_fullscreen_triangle();
-      glDisable(GL_BLEND);
+      accumulate(accumulator_target_.get(), pass_colours_.get(), count, 1.0f / positions_.size(), true);
       timer_.end();
     }
-    // Copy the accumulated average into the RGBA16F output.
-    const gl::Framebuffer out = gl::make_framebuffer({{output}});
-    glBindFramebuffer(GL_FRAMEBUFFER, out.get());
-    glProgramUniform1f(program, glGetUniformLocation(program, "u_weight"), 1.0f);
-    glBindTextureUnit(0, accumulator_.get());
-    draw_fullscreen_triangle();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    // The accumulated average into the RGBA16F output (a batch of one layer, weight 1).
+    timer_.begin("resolve");
+    accumulate(output_target_.get({{output}}), accumulator_as_array(), 1, 1.0f, false);
+    timer_.end();
     gl::check("jittered supersampling");
   }
 
-  double bytes_per_pixel() const override { return 8 + 4 + 16 + 8; }
+  double bytes_per_pixel() const override { return batch_ * 8 + 4 + 16 + 8; }
 
  private:
+  void accumulate(GLuint framebuffer, GLuint layers, int count, float weight, bool blend) {
+    const GLuint program = accumulate_.get();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    if (blend) {
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);
+    }
+    glProgramUniform1i(program, glGetUniformLocation(program, "u_count"), count);
+    glProgramUniform1f(program, glGetUniformLocation(program, "u_weight"), weight);
+    glBindTextureUnit(0, layers);
+    glUseProgram(program);
+    draw_fullscreen_triangle();
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  // The accumulator seen as a one-layer array texture, for the final copy.
+  GLuint accumulator_as_array() {
+    if (!accumulator_view_.get()) {
+      GLuint id;
+      glGenTextures(1, &id);
+      glTextureView(id, GL_TEXTURE_2D_ARRAY, accumulator_.get(), GL_RGBA32F, 0, 1, 0, 1);
+      accumulator_view_ = gl::Texture(id);
+    }
+    return accumulator_view_.get();
+  }
+
   std::vector<Vec2> positions_;
+  int batch_;
   SceneRenderer renderer_;
-  gl::Texture pass_colour_, pass_depth_, accumulator_;
-  gl::Framebuffer pass_target_, accumulator_target_;
+  gl::Texture pass_colours_, pass_depth_, accumulator_, accumulator_view_;
+  std::vector<gl::Framebuffer> pass_targets_;
+  gl::Framebuffer accumulator_target_;
   gl::Program accumulate_;
+  gl::CachedFramebuffer output_target_;
 };
 
 }  // namespace

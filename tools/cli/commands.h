@@ -15,5 +15,6 @@ Action add_eval_table_command(CLI::App& app);
 Action add_render_command(CLI::App& app);
 Action add_compare_command(CLI::App& app);
 Action add_view_command(CLI::App& app);
+Action add_bench_command(CLI::App& app);
 
 }  // namespace rsaa::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   add(rsaa::cli::add_render_command);
   add(rsaa::cli::add_compare_command);
   add(rsaa::cli::add_view_command);
+  add(rsaa::cli::add_bench_command);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,92 @@
+// The bench's measurements and output formats on a tiny run (timings are never asserted).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/gl_context.h"
+#include "tests/test_util.h"
+#include "tools/bench/bench.h"
+
+namespace rsaa {
+namespace {
+
+bench::TechniqueResult row(const std::string& scene, const std::string& label, double ratio, double psnr) {
+  bench::TechniqueResult r;
+  r.scene = scene;
+  r.label = label;
+  r.frame_ratio = ratio;
+  r.psnr_db = psnr;
+  return r;
+}
+
+TEST(Bench, ParetoFrontAndCheapestTechnique) {
+  std::vector<bench::TechniqueResult> r = {row("a", "noaa", 1.0, 30), row("a", "fast good", 1.5, 38),
+                                           row("a", "slow worse", 2.0, 36), row("a", "slow best", 8.0, 45),
+                                           row("b", "other scene", 9.0, 20)};
+  bench::mark_pareto(r);
+  EXPECT_TRUE(r[0].pareto);
+  EXPECT_TRUE(r[1].pareto);
+  EXPECT_FALSE(r[2].pareto);  // dominated by "fast good"
+  EXPECT_TRUE(r[3].pareto);
+  EXPECT_TRUE(r[4].pareto);   // alone in its scene
+  EXPECT_EQ(bench::cheapest_reaching(r, "a", 37.0)->label, "fast good");
+  EXPECT_EQ(bench::cheapest_reaching(r, "a", 50.0), nullptr);
+}
+
+TEST(Bench, TinyRunWritesWellFormedResults) {
+  gl::HeadlessContext context;
+  bench::BenchOptions o;
+  o.scenes = {"builtin:edges"};
+  o.techniques = bench::default_techniques();
+  o.techniques.resize(6);  // noaa, msaa 4x/8x, ssaa 16x, two RSAA variants
+  o.width = 48, o.height = 36, o.frames = 2, o.orbit_frames = 2;
+  const auto results = bench::run_bench(o, nullptr);
+  ASSERT_EQ(results.size(), 6u);
+  EXPECT_DOUBLE_EQ(results[0].frame_ratio, 1.0);
+  for (const auto& r : results) {
+    EXPECT_GT(r.psnr_db, 10.0) << r.label;
+    EXPECT_LE(r.psnr_db, 99.0) << r.label;
+    EXPECT_GT(r.flicker_psnr_db, 0.0) << r.label;
+    EXPECT_GT(r.bytes_per_pixel, 0.0) << r.label;
+    EXPECT_FALSE(r.pass_medians.empty()) << r.label;
+  }
+  EXPECT_GT(results[3].psnr_db, results[0].psnr_db);  // ssaa 16x beats no AA
+
+  const auto json = nlohmann::json::parse(bench::results_json(o, results));
+  EXPECT_EQ(json.at("format"), "rsaa-bench");
+  ASSERT_EQ(json.at("results").size(), 6u);
+  for (const char* key : {"scene", "technique", "passes", "frame_ms", "frame_ratio_to_noaa", "psnr_db", "ssim",
+                          "luma_error_share_percent", "orbit_psnr_db", "flicker_psnr_db", "bytes_per_pixel", "pareto"})
+    EXPECT_TRUE(json["results"][0].contains(key)) << key;
+  std::istringstream csv(bench::results_csv(results));
+  std::string line;
+  int lines = 0;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("scene,technique,frame_ms,", 0), 0u);
+  while (std::getline(csv, line)) ++lines;
+  EXPECT_EQ(lines, 6);
+
+  test::TempDir dir;
+  bench::plot_pareto(results, results[0].scene, dir.file("pareto.png"));
+  bench::plot_pass_times(results, results[0].scene, dir.file("passes.png"));
+  EXPECT_GT(std::filesystem::file_size(dir.file("pareto.png")), 1000u);
+  EXPECT_GT(std::filesystem::file_size(dir.file("passes.png")), 1000u);
+}
+
+TEST(Bench, RejectsBadOptions) {
+  gl::HeadlessContext context;
+  bench::BenchOptions o;
+  o.scenes = {"builtin:edges"};
+  o.techniques = bench::default_techniques();
+  std::swap(o.techniques[0], o.techniques[1]);
+  EXPECT_THROW(bench::run_bench(o, nullptr), std::invalid_argument);  // noaa must come first
+  o.techniques = bench::default_techniques();
+  o.orbit_frames = 1;
+  EXPECT_THROW(bench::run_bench(o, nullptr), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rsaa

@@ -1,0 +1,234 @@
+#include "tools/bench/bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/image_io.h"
+#include "core/image_metrics.h"
+#include "runtime/render.h"
+#include "runtime/scene.h"
+
+namespace rsaa::bench {
+namespace {
+
+constexpr double kIdenticalDb = 99.0;  // PSNR reported for identical images
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double capped(double db) { return std::isfinite(db) ? std::min(db, kIdenticalDb) : kIdenticalDb; }
+
+double psnr_of_mse(double mse) { return mse > 0 ? capped(10.0 * std::log10(255.0 * 255.0 / mse)) : kIdenticalDb; }
+
+// PSNR of the frame-to-frame change of a sequence against the reference's change.
+double flicker_psnr(const std::vector<DisplayImage>& frames, const std::vector<DisplayImage>& reference) {
+  double squared = 0.0;
+  std::size_t n = 0;
+  for (std::size_t f = 1; f < frames.size(); ++f)
+    for (std::size_t i = 0; i < frames[f].rgb.size(); ++i) {
+      const double change = double(frames[f].rgb[i]) - frames[f - 1].rgb[i];
+      const double reference_change = double(reference[f].rgb[i]) - reference[f - 1].rgb[i];
+      squared += (change - reference_change) * (change - reference_change);
+      ++n;
+    }
+  return n ? psnr_of_mse(squared / double(n)) : kIdenticalDb;
+}
+
+Camera orbit(const Camera& c, double degrees) {
+  const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(float(degrees)), c.up);
+  Camera out = c;
+  out.eye = c.target + glm::vec3(turn * glm::vec4(c.eye - c.target, 0.0f));
+  return out;
+}
+
+TechniqueOptions named(const std::string& technique, int samples) {
+  TechniqueOptions o;
+  o.technique = technique;
+  o.samples = samples;
+  return o;
+}
+
+}  // namespace
+
+std::vector<TechniqueOptions> default_techniques() {
+  std::vector<TechniqueOptions> list = {named("noaa", 0), named("msaa", 4), named("msaa", 8),
+                                        named("ssaa", 16)};
+  for (int samples : {4, 8})
+    for (const char* similarity : {"sadp", "depth"})
+      for (int auth : {0, 1, 2}) {
+        TechniqueOptions o = named("rsaa", samples);
+        o.similarity = similarity;
+        o.auth = auth;
+        list.push_back(o);
+      }
+  return list;
+}
+
+std::vector<std::string> default_scenes() {
+  std::vector<std::string> scenes;
+  for (const std::string& name : builtin_scene_names()) scenes.push_back("builtin:" + name);
+  scenes.push_back("/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  scenes.push_back("/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf");
+  scenes.push_back("/usr/share/assimp/models/OBJ/spider.obj");
+  return scenes;
+}
+
+std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& progress) {
+  if (o.techniques.empty() || o.techniques.front().technique != "noaa")
+    throw std::invalid_argument("bench: the first technique must be noaa (the ratio baseline)");
+  if (o.frames < 1 || o.orbit_frames < 2)
+    throw std::invalid_argument("bench: --frames must be >= 1 and --orbit-frames >= 2");
+  validate_size(o.width, o.height);
+  for (const TechniqueOptions& t : o.techniques) validate(t);
+  std::vector<TechniqueResult> results;
+  const int total = int(o.scenes.size() * (o.techniques.size() + 1));
+  int done = 0;
+  for (const std::string& spec : o.scenes) {
+    const Scene scene = load_scene_within(spec, 120.0);
+    const GpuScene gpu(scene);
+    std::vector<Camera> cameras;
+    const Camera start = choose_camera(scene, std::nullopt);
+    for (int f = 0; f < o.orbit_frames; ++f) cameras.push_back(orbit(start, f * o.orbit_degrees_per_frame));
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, o.width, o.height);
+
+    if (progress) progress(spec + ": 64x SSAA reference", done, total);
+    std::vector<DisplayImage> reference;
+    {
+      TechniqueOptions ssaa = named("ssaa", 64);
+      auto t = make_technique(ssaa, o.width, o.height);
+      for (const Camera& c : cameras) {
+        t->render(gpu, make_view(c, o.width, o.height), output.get());
+        reference.push_back(to_display(read_back_image(output.get(), o.width, o.height)));
+      }
+    }
+    ++done;
+
+    double noaa_ms = 0.0;
+    for (const TechniqueOptions& options : o.techniques) {
+      TechniqueResult r;
+      r.scene = scene.name;
+      r.label = technique_label(options);
+      r.options = options;
+      if (progress) progress(spec + ": " + r.label, done, total);
+      auto t = make_technique(options, o.width, o.height);
+      const View view = make_view(cameras[0], o.width, o.height);
+      t->render(gpu, view, output.get());  // warm-up: shader compilation
+      t->take_pass_times();
+      std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> per_pass;
+      std::vector<std::string> pass_order;
+      std::vector<double> frame_ms;
+      for (int k = 0; k < o.frames; ++k) {
+        t->render(gpu, view, output.get());
+        double sum = 0.0;
+        for (const PassTime& p : t->take_pass_times()) {
+          if (!per_pass.count(p.pass)) pass_order.push_back(p.pass);
+          per_pass[p.pass].first.push_back(p.wall_milliseconds);
+          per_pass[p.pass].second.push_back(p.milliseconds);
+          sum += p.wall_milliseconds;
+        }
+        frame_ms.push_back(sum);
+      }
+      for (const std::string& pass : pass_order)
+        r.pass_medians.push_back({pass, median(per_pass[pass].second), median(per_pass[pass].first)});
+      r.frame_ms = median(frame_ms);
+      if (options.technique == "noaa") noaa_ms = r.frame_ms;
+      r.frame_ratio = noaa_ms > 0 ? r.frame_ms / noaa_ms : 1.0;
+      r.bytes_per_pixel = t->bytes_per_pixel();
+
+      std::vector<DisplayImage> frames = {to_display(read_back_image(output.get(), o.width, o.height))};
+      const ImageComparison c = compare_images(frames[0], reference[0]);
+      r.psnr_db = capped(c.psnr_db);
+      r.ssim = c.ssim;
+      r.luma_error_share = c.luma_error_share;
+      double psnr_sum = r.psnr_db;
+      for (std::size_t f = 1; f < cameras.size(); ++f) {
+        t->render(gpu, make_view(cameras[f], o.width, o.height), output.get());
+        t->take_pass_times();
+        frames.push_back(to_display(read_back_image(output.get(), o.width, o.height)));
+        psnr_sum += capped(compare_images(frames.back(), reference[f]).psnr_db);
+      }
+      r.orbit_psnr_db = psnr_sum / double(cameras.size());
+      r.flicker_psnr_db = flicker_psnr(frames, reference);
+      results.push_back(r);
+      ++done;
+    }
+  }
+  mark_pareto(results);
+  if (progress) progress("done", done, total);
+  return results;
+}
+
+void mark_pareto(std::vector<TechniqueResult>& results) {
+  for (TechniqueResult& r : results) {
+    r.pareto = true;
+    for (const TechniqueResult& other : results)
+      if (&other != &r && other.scene == r.scene && other.frame_ratio <= r.frame_ratio &&
+          other.psnr_db >= r.psnr_db && (other.frame_ratio < r.frame_ratio || other.psnr_db > r.psnr_db))
+        r.pareto = false;
+  }
+}
+
+const TechniqueResult* cheapest_reaching(const std::vector<TechniqueResult>& results,
+                                         const std::string& scene, double target_db) {
+  const TechniqueResult* best = nullptr;
+  for (const TechniqueResult& r : results)
+    if (r.scene == scene && r.psnr_db >= target_db && (!best || r.frame_ratio < best->frame_ratio)) best = &r;
+  return best;
+}
+
+std::string results_json(const BenchOptions& o, const std::vector<TechniqueResult>& results) {
+  nlohmann::json out = {{"format", "rsaa-bench"},
+                        {"version", 1},
+                        {"width", o.width},
+                        {"height", o.height},
+                        {"timed_frames", o.frames},
+                        {"orbit_frames", o.orbit_frames},
+                        {"orbit_degrees_per_frame", o.orbit_degrees_per_frame},
+                        {"reference", "ssaa 64x"},
+                        {"psnr_identical_db", kIdenticalDb},
+                        {"results", nlohmann::json::array()}};
+  for (const TechniqueResult& r : results) {
+    nlohmann::json passes = nlohmann::json::array();
+    for (const PassTime& p : r.pass_medians)
+      passes.push_back({{"pass", p.pass}, {"wall_ms", p.wall_milliseconds}, {"gl_timer_ms", p.milliseconds}});
+    out["results"].push_back({{"scene", r.scene},
+                              {"technique", r.label},
+                              {"passes", passes},
+                              {"frame_ms", r.frame_ms},
+                              {"frame_ratio_to_noaa", r.frame_ratio},
+                              {"psnr_db", r.psnr_db},
+                              {"ssim", r.ssim},
+                              {"luma_error_share_percent", r.luma_error_share},
+                              {"orbit_psnr_db", r.orbit_psnr_db},
+                              {"flicker_psnr_db", r.flicker_psnr_db},
+                              {"bytes_per_pixel", r.bytes_per_pixel},
+                              {"pareto", r.pareto}});
+  }
+  return out.dump(2) + "\n";
+}
+
+std::string results_csv(const std::vector<TechniqueResult>& results) {
+  std::ostringstream s;
+  s << "scene,technique,frame_ms,frame_ratio_to_noaa,psnr_db,ssim,luma_error_share_percent,"
+       "orbit_psnr_db,flicker_psnr_db,bytes_per_pixel,pareto,passes_wall_ms\n";
+  for (const TechniqueResult& r : results) {
+    s << '"' << r.scene << "\",\"" << r.label << "\"," << r.frame_ms << ',' << r.frame_ratio << ','
+      << r.psnr_db << ',' << r.ssim << ',' << r.luma_error_share << ',' << r.orbit_psnr_db << ','
+      << r.flicker_psnr_db << ',' << r.bytes_per_pixel << ',' << (r.pareto ? 1 : 0) << ",\"";
+    for (std::size_t i = 0; i < r.pass_medians.size(); ++i)
+      s << (i ? ";" : "") << r.pass_medians[i].pass << '=' << r.pass_medians[i].wall_milliseconds;
+    s << "\"\n";
+  }
+  return s.str();
+}
+
+}  // namespace rsaa::bench

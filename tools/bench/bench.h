@@ -1,0 +1,65 @@
+// rsaa bench: the speed/accuracy trade of every technique on a set of scenes (DESIGN.md
+// section 5): per-pass and whole-frame times (medians, warm-up excluded, as ratios to the no-AA
+// frame of the same run), PSNR / SSIM / luminance-error share against 64x SSAA, temporal quality
+// over a short camera orbit, and memory per pixel.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "runtime/pass_timer.h"
+#include "runtime/technique.h"
+
+namespace rsaa::bench {
+
+struct BenchOptions {
+  std::vector<std::string> scenes;
+  std::vector<TechniqueOptions> techniques;  // the first must be noaa (the ratio baseline)
+  int width = 640, height = 480;
+  int frames = 5;        // timed frames per technique (after one warm-up frame)
+  int orbit_frames = 4;  // frames of the camera animation for the temporal metrics
+  double orbit_degrees_per_frame = 0.25;
+};
+
+struct TechniqueResult {
+  std::string scene, label;
+  TechniqueOptions options;
+  std::vector<PassTime> pass_medians;  // median over the timed frames, per pass
+  double frame_ms = 0.0;               // median of the frames' summed wall-clock pass times
+  double frame_ratio = 0.0;            // frame_ms / noaa frame_ms of the same scene
+  double psnr_db = 0.0, ssim = 0.0, luma_error_share = 0.0;  // static frame vs 64x SSAA
+  double orbit_psnr_db = 0.0;    // mean per-frame PSNR over the orbit
+  double flicker_psnr_db = 0.0;  // PSNR of frame-to-frame differences vs the reference's
+  double bytes_per_pixel = 0.0;
+  bool pareto = false;  // no other technique of the scene is both faster and better (PSNR)
+};
+
+// The default technique list: noaa, msaa 4x/8x, ssaa 16x, and the 12 RSAA variants.
+std::vector<TechniqueOptions> default_techniques();
+// The built-in scenes and the assimp test models the tests use.
+std::vector<std::string> default_scenes();
+
+using Progress = std::function<void(const std::string& what, int done, int total)>;
+
+// Needs a current GL context.
+std::vector<TechniqueResult> run_bench(const BenchOptions& options, const Progress& progress);
+
+// Marks the Pareto front of each scene (time ratio down, PSNR up).
+void mark_pareto(std::vector<TechniqueResult>& results);
+
+// The cheapest technique of `scene` whose PSNR reaches `target_db`, or nullptr.
+const TechniqueResult* cheapest_reaching(const std::vector<TechniqueResult>& results,
+                                         const std::string& scene, double target_db);
+
+std::string results_json(const BenchOptions& options, const std::vector<TechniqueResult>& results);
+std::string results_csv(const std::vector<TechniqueResult>& results);
+
+// PNG plots made with OpenCV: PSNR against frame-time ratio with the Pareto front, and per-pass
+// stacked times, for one scene.
+void plot_pareto(const std::vector<TechniqueResult>& results, const std::string& scene,
+                 const std::string& path);
+void plot_pass_times(const std::vector<TechniqueResult>& results, const std::string& scene,
+                     const std::string& path);
+
+}  // namespace rsaa::bench

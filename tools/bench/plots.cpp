@@ -1,0 +1,149 @@
+// The bench plots, drawn with OpenCV and written through OpenImageIO (atomically).
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <opencv2/imgproc.hpp>
+
+#include "core/colour.h"
+#include "core/image_io.h"
+#include "tools/bench/bench.h"
+
+namespace rsaa::bench {
+namespace {
+
+const cv::Scalar kInk(40, 40, 40), kGrid(220, 220, 220);
+
+// Technique families by colour (BGR).
+cv::Scalar family_colour(const TechniqueResult& r) {
+  if (r.options.technique == "noaa") return {0, 0, 0};
+  if (r.options.technique == "msaa") return {200, 110, 30};
+  if (r.options.technique == "ssaa") return {40, 150, 40};
+  return r.options.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);
+}
+
+// "R8 sadp 1" for rsaa 8x sadp auth1, the label itself otherwise.
+std::string short_label(const TechniqueResult& r) {
+  if (r.options.technique != "rsaa") return r.label;
+  const int samples = r.options.samples ? r.options.samples : 8;
+  return "R" + std::to_string(samples) + " " + r.options.similarity + " a" + std::to_string(r.options.auth);
+}
+
+void save(const cv::Mat& canvas, const std::string& path) {
+  Image image(canvas.cols, canvas.rows);
+  for (int y = 0; y < canvas.rows; ++y)
+    for (int x = 0; x < canvas.cols; ++x) {
+      const cv::Vec3b p = canvas.at<cv::Vec3b>(y, x);
+      image.at(x, y) = {srgb_to_linear(p[2] / 255.0f), srgb_to_linear(p[1] / 255.0f), srgb_to_linear(p[0] / 255.0f)};
+    }
+  write_image(path, image);
+}
+
+void text(cv::Mat& canvas, const std::string& s, cv::Point at, double scale = 0.45,
+          cv::Scalar colour = kInk) {
+  cv::putText(canvas, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1, cv::LINE_AA);
+}
+
+std::vector<const TechniqueResult*> of_scene(const std::vector<TechniqueResult>& results, const std::string& scene) {
+  std::vector<const TechniqueResult*> out;
+  for (const TechniqueResult& r : results)
+    if (r.scene == scene) out.push_back(&r);
+  return out;
+}
+
+}  // namespace
+
+void plot_pareto(const std::vector<TechniqueResult>& results, const std::string& scene, const std::string& path) {
+  const auto rows = of_scene(results, scene);
+  if (rows.empty()) return;
+  const int width = 960, height = 600, left = 70, right = 250, top = 50, bottom = 60;
+  cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  double x_lo = 1e9, x_hi = 0, y_lo = 1e9, y_hi = 0;
+  for (const auto* r : rows) {
+    x_lo = std::min(x_lo, r->frame_ratio), x_hi = std::max(x_hi, r->frame_ratio);
+    y_lo = std::min(y_lo, r->psnr_db), y_hi = std::max(y_hi, r->psnr_db);
+  }
+  x_lo = std::log2(std::max(x_lo, 1e-3)) - 0.2, x_hi = std::log2(std::max(x_hi, 1e-3)) + 0.2;
+  y_lo = std::floor(y_lo - 1), y_hi = std::ceil(y_hi + 1);
+  const auto px = [&](double ratio) {
+    return left + int((std::log2(std::max(ratio, 1e-3)) - x_lo) / (x_hi - x_lo) * (width - left - right));
+  };
+  const auto py = [&](double db) { return height - bottom - int((db - y_lo) / (y_hi - y_lo) * (height - top - bottom)); };
+  for (int e = int(std::ceil(x_lo)); e <= int(std::floor(x_hi)); ++e) {
+    const double ratio = std::pow(2.0, e);
+    cv::line(canvas, {px(ratio), top}, {px(ratio), height - bottom}, kGrid);
+    char label[32];
+    std::snprintf(label, sizeof label, "%gx", ratio);
+    text(canvas, label, {px(ratio) - 12, height - bottom + 20});
+  }
+  for (int db = int(y_lo); db <= int(y_hi); db += std::max(1, int(y_hi - y_lo) / 8)) {
+    cv::line(canvas, {left, py(db)}, {width - right, py(db)}, kGrid);
+    text(canvas, std::to_string(db), {left - 30, py(db) + 5});
+  }
+  cv::rectangle(canvas, {left, top}, {width - right, height - bottom}, kInk);
+  text(canvas, "frame time / no-AA frame time (log scale)", {left + 150, height - 15}, 0.5);
+  text(canvas, "PSNR vs 64x SSAA (dB)", {10, top - 15}, 0.5);
+  text(canvas, scene.size() > 60 ? "..." + scene.substr(scene.size() - 57) : scene, {left + 150, top - 15}, 0.55);
+  // The Pareto front, left to right.
+  std::vector<const TechniqueResult*> front;
+  for (const auto* r : rows)
+    if (r->pareto) front.push_back(r);
+  std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->frame_ratio < b->frame_ratio; });
+  for (std::size_t i = 1; i < front.size(); ++i)
+    cv::line(canvas, {px(front[i - 1]->frame_ratio), py(front[i - 1]->psnr_db)},
+             {px(front[i]->frame_ratio), py(front[i]->psnr_db)}, {150, 150, 150}, 2, cv::LINE_AA);
+  int legend_y = top + 10;
+  for (const auto* r : rows) {
+    const cv::Point p(px(r->frame_ratio), py(r->psnr_db));
+    cv::circle(canvas, p, r->pareto ? 7 : 5, family_colour(*r), r->pareto ? -1 : 2, cv::LINE_AA);
+    text(canvas, short_label(*r), p + cv::Point(8, -6), 0.38, family_colour(*r));
+    char line[96];
+    std::snprintf(line, sizeof line, "%s%-22s %5.2f dB %5.2fx", r->pareto ? "* " : "  ", short_label(*r).c_str(),
+                  r->psnr_db, r->frame_ratio);
+    text(canvas, line, {width - right + 10, legend_y}, 0.38, family_colour(*r));
+    legend_y += 17;
+  }
+  text(canvas, "* = on the Pareto front", {width - right + 10, legend_y + 10}, 0.4);
+  save(canvas, path);
+}
+
+void plot_pass_times(const std::vector<TechniqueResult>& results, const std::string& scene, const std::string& path) {
+  const auto rows = of_scene(results, scene);
+  if (rows.empty()) return;
+  const std::map<std::string, cv::Scalar> colours = {{"main", {200, 130, 60}},
+                                                     {"pre-pass", {60, 60, 210}},
+                                                     {"post-process", {60, 170, 60}},
+                                                     {"resolve", {160, 160, 160}}};
+  const int width = 960, row_h = 24, left = 190, right = 30, top = 40;
+  const int height = top + int(rows.size()) * row_h + 70;
+  cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  double longest = 0;
+  for (const auto* r : rows) longest = std::max(longest, r->frame_ms);
+  const double scale = (width - left - right) / std::max(longest, 1e-6);
+  text(canvas, "per-pass wall-clock time, median of the timed frames (ms): " + scene.substr(scene.rfind('/') + 1),
+       {10, 25}, 0.5);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const int y = top + int(i) * row_h;
+    text(canvas, short_label(*rows[i]), {10, y + 16}, 0.42);
+    double x = left;
+    for (const PassTime& p : rows[i]->pass_medians) {
+      const auto it = colours.find(p.pass);
+      const double w = p.wall_milliseconds * scale;
+      cv::rectangle(canvas, cv::Point(int(x), y + 3), cv::Point(int(x + w), y + row_h - 3),
+                    it == colours.end() ? kInk : it->second, -1);
+      x += w;
+    }
+    char total[32];
+    std::snprintf(total, sizeof total, "%.1f", rows[i]->frame_ms);
+    text(canvas, total, {int(x) + 5, y + 16}, 0.38);
+  }
+  int x = 10;
+  for (const auto& [name, colour] : colours) {
+    cv::rectangle(canvas, {x, height - 40}, {x + 14, height - 26}, colour, -1);
+    text(canvas, name, {x + 20, height - 28}, 0.45);
+    x += 150;
+  }
+  save(canvas, path);
+}
+
+}  // namespace rsaa::bench

@@ -1,0 +1,111 @@
+// rsaa bench: the speed/accuracy trade of every technique, written as JSON, CSV, PNG plots and a
+// Markdown table.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "runtime/gl_context.h"
+#include "tools/bench/bench.h"
+#include "tools/cli/commands.h"
+
+namespace rsaa::cli {
+namespace {
+
+struct BenchArgs {
+  std::string scenes;
+  int width = 640, height = 480;
+  int frames = 5, orbit_frames = 4;
+  bool quick = false;
+  std::string out_dir = "out/bench";
+  double target_psnr = 0.0;
+};
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+std::string file_stem(const std::string& scene) {
+  std::string s = scene.substr(scene.find_last_of("/:") + 1);
+  return s.substr(0, s.find('.'));
+}
+
+int run_bench_command(BenchArgs a) {
+  bench::BenchOptions o;
+  o.techniques = bench::default_techniques();
+  if (a.quick) {
+    o.scenes = {"builtin:default", "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"};
+    a.width = 160, a.height = 120, a.frames = 3, a.orbit_frames = 3;
+  } else {
+    o.scenes = bench::default_scenes();
+  }
+  if (!a.scenes.empty()) o.scenes = split(a.scenes);
+  o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
+  if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
+    throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
+
+  gl::HeadlessContext context;
+  const auto results = bench::run_bench(o, [](const std::string& what, int done, int total) {
+    std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
+  });
+  write_file_atomically(a.out_dir + "/bench.json", bench::results_json(o, results));
+  write_file_atomically(a.out_dir + "/bench.csv", bench::results_csv(results));
+  std::vector<std::string> scenes;
+  for (const auto& r : results)
+    if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
+  for (const std::string& scene : scenes) {
+    bench::plot_pareto(results, scene, a.out_dir + "/pareto-" + file_stem(scene) + ".png");
+    bench::plot_pass_times(results, scene, a.out_dir + "/passes-" + file_stem(scene) + ".png");
+  }
+
+  std::printf("%dx%d, median of %d timed frames after a warm-up, orbit of %d frames; * = Pareto front\n\n",
+              o.width, o.height, o.frames, o.orbit_frames);
+  std::printf("| scene | technique | PSNR dB | SSIM | luma err %% | orbit PSNR | flicker PSNR | frame ms | x noaa | B/px |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (const auto& r : results)
+    std::printf("| %s | %s%s | %.2f | %.4f | %.2f | %.2f | %.2f | %.1f | %.2f | %.0f |\n",
+                file_stem(r.scene).c_str(), r.pareto ? "* " : "", r.label.c_str(), r.psnr_db, r.ssim,
+                r.luma_error_share, r.orbit_psnr_db, r.flicker_psnr_db, r.frame_ms, r.frame_ratio,
+                r.bytes_per_pixel);
+  if (a.target_psnr > 0) {
+    std::printf("\ncheapest technique reaching %.1f dB:\n", a.target_psnr);
+    for (const std::string& scene : scenes) {
+      const auto* best = bench::cheapest_reaching(results, scene, a.target_psnr);
+      std::printf("  %-20s %s\n", file_stem(scene).c_str(),
+                  best ? (best->label + " (" + std::to_string(best->frame_ratio).substr(0, 4) + "x noaa)").c_str()
+                       : "none of the techniques");
+    }
+  }
+  std::fprintf(stderr, "wrote %s/bench.json, bench.csv, pareto-*.png, passes-*.png\n", a.out_dir.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Action add_bench_command(CLI::App& app) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Measure the speed/accuracy trade of every technique on scenes (times, PSNR/SSIM vs "
+               "64x SSAA, temporal flicker, memory); writes JSON, CSV and PNG plots");
+  cmd->add_option("--scenes", args->scenes,
+                  "Comma-separated scenes (default: all built-in scenes and three assimp test models)");
+  cmd->add_option("--width", args->width, "Image width")->capture_default_str();
+  cmd->add_option("--height", args->height, "Image height")->capture_default_str();
+  cmd->add_option("--frames", args->frames, "Timed frames per technique (median)")->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--orbit-frames", args->orbit_frames, "Frames of the camera orbit (temporal metrics)")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 1000));
+  cmd->add_flag("--quick", args->quick, "CI-scale run: 2 scenes, 160x120, 3 frames, 3 orbit frames");
+  cmd->add_option("--out-dir", args->out_dir, "Where bench.json, bench.csv and the plots go")->capture_default_str();
+  cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)");
+  return [args] { return run_bench_command(*args); };
+}
+
+}  // namespace rsaa::cli
