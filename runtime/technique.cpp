@@ -13,14 +13,14 @@ int samples_or(const TechniqueOptions& o, int fallback) { return o.samples ? o.s
 }  // namespace
 
 const std::vector<std::string>& technique_names() {
-  static const std::vector<std::string> names = {"noaa", "msaa", "ssaa", "rsaa"};
+  static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "rsaa"};
   return names;
 }
 
 void validate(const TechniqueOptions& o) {
   const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
-  if (o.technique == "noaa") {
-    if (o.samples > 1) bad("noaa takes no --samples");
+  if (o.technique == "noaa" || o.technique == "fxaa") {
+    if (o.samples > 1) bad(o.technique + " takes no --samples");
   } else if (o.technique == "msaa") {
     const int n = samples_or(o, 4);
     if (n != 4 && n != 8) bad("msaa --samples must be 4 or 8, not " + std::to_string(n));
@@ -50,7 +50,7 @@ void validate(const TechniqueOptions& o) {
 }
 
 std::string technique_label(const TechniqueOptions& o) {
-  if (o.technique == "noaa") return "noaa";
+  if (o.technique == "noaa" || o.technique == "fxaa") return o.technique;
   if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
   if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
   const int n = samples_or(o, 8);
@@ -62,6 +62,7 @@ std::string technique_label(const TechniqueOptions& o) {
 std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, int height) {
   validate(o);
   if (o.technique == "noaa") return make_noaa(width, height);
+  if (o.technique == "fxaa") return make_fxaa(width, height);
   if (o.technique == "msaa") {
     if (samples_or(o, 4) == 4) return make_hardware_msaa(4, width, height);
     return make_jittered_supersampling(builtin_pattern("d3d8x").positions, width, height);

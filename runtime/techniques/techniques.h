@@ -13,6 +13,7 @@
 namespace rsaa {
 
 std::unique_ptr<Technique> make_noaa(int width, int height);
+std::unique_ptr<Technique> make_fxaa(int width, int height);
 std::unique_ptr<Technique> make_hardware_msaa(int samples, int width, int height);
 std::unique_ptr<Technique> make_jittered_supersampling(std::vector<Vec2> positions, int width, int height);
 // mask_output: an R32UI texture that receives the masks when settings.output_mask.

@@ -60,8 +60,8 @@ TechniqueOptions named(const std::string& technique, int samples) {
 }  // namespace
 
 std::vector<TechniqueOptions> default_techniques() {
-  std::vector<TechniqueOptions> list = {named("noaa", 0), named("msaa", 4), named("msaa", 8),
-                                        named("ssaa", 16)};
+  std::vector<TechniqueOptions> list = {named("noaa", 0), named("fxaa", 0), named("msaa", 4),
+                                        named("msaa", 8), named("ssaa", 16)};
   for (int samples : {4, 8})
     for (const char* similarity : {"sadp", "depth"})
       for (int auth : {0, 1, 2}) {

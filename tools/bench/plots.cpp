@@ -17,6 +17,7 @@ const cv::Scalar kInk(40, 40, 40), kGrid(220, 220, 220);
 // Technique families by colour (BGR).
 cv::Scalar family_colour(const TechniqueResult& r) {
   if (r.options.technique == "noaa") return {0, 0, 0};
+  if (r.options.technique == "fxaa") return {160, 40, 160};
   if (r.options.technique == "msaa") return {200, 110, 30};
   if (r.options.technique == "ssaa") return {40, 150, 40};
   return r.options.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);

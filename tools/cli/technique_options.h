@@ -11,7 +11,7 @@ namespace rsaa::cli {
 constexpr double kSceneLoadSeconds = 120.0;
 
 inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
-  cmd->add_option("--technique", o.technique, "noaa | msaa | ssaa | rsaa")->capture_default_str();
+  cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | rsaa")->capture_default_str();
   cmd->add_option("--samples", o.samples,
                   "msaa: 4 (hardware) | 8 (jittered); ssaa: 16 | 64; rsaa: 4 | 8 (default 8)");
   cmd->add_option("--similarity", o.similarity, "rsaa: sadp | depth")->capture_default_str();
