@@ -59,7 +59,7 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
            {"--camera 0,0,5,0,0,x", "'x' is not a number"},
            {"--width 0 --height 24", "image size 0x24"},
            {"--width 32 --height 100000", "outside 1..8192"},
-           {"--technique fxaa", "unknown technique 'fxaa'"},
+           {"--technique smaa", "unknown technique 'smaa'"},
            {"--technique rsaa --auth 3", "--auth"},
            {"--technique rsaa --samples 16", "--samples must be 4 or 8"},
            {"--technique rsaa --similarity normals", "--similarity"},
