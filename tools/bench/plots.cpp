@@ -57,7 +57,7 @@ std::vector<const TechniqueResult*> of_scene(const std::vector<TechniqueResult>&
 void plot_pareto(const std::vector<TechniqueResult>& results, const std::string& scene, const std::string& path) {
   const auto rows = of_scene(results, scene);
   if (rows.empty()) return;
-  const int width = 960, height = 600, left = 70, right = 250, top = 50, bottom = 60;
+  const int width = 1060, height = 600, left = 70, right = 330, top = 50, bottom = 60;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   double x_lo = 1e9, x_hi = 0, y_lo = 1e9, y_hi = 0;
   for (const auto* r : rows) {
@@ -97,11 +97,13 @@ void plot_pareto(const std::vector<TechniqueResult>& results, const std::string&
   for (const auto* r : rows) {
     const cv::Point p(px(r->frame_ratio), py(r->psnr_db));
     cv::circle(canvas, p, r->pareto ? 7 : 5, family_colour(*r), r->pareto ? -1 : 2, cv::LINE_AA);
-    text(canvas, short_label(*r), p + cv::Point(8, -6), 0.38, family_colour(*r));
+    // Only the front is labelled in the plot (the rest cluster); the legend lists everything.
+    if (r->pareto) text(canvas, short_label(*r), p + cv::Point(8, -6), 0.4, family_colour(*r));
     char line[96];
-    std::snprintf(line, sizeof line, "%s%-22s %5.2f dB %5.2fx", r->pareto ? "* " : "  ", short_label(*r).c_str(),
-                  r->psnr_db, r->frame_ratio);
-    text(canvas, line, {width - right + 10, legend_y}, 0.38, family_colour(*r));
+    std::snprintf(line, sizeof line, "%s %s", r->pareto ? "*" : " ", short_label(*r).c_str());
+    text(canvas, line, {width - right + 10, legend_y}, 0.4, family_colour(*r));
+    std::snprintf(line, sizeof line, "%6.2f dB  %6.2fx", r->psnr_db, r->frame_ratio);
+    text(canvas, line, {width - right + 160, legend_y}, 0.4, family_colour(*r));
     legend_y += 17;
   }
   text(canvas, "* = on the Pareto front", {width - right + 10, legend_y + 10}, 0.4);

@@ -153,7 +153,6 @@ int run_view(const ViewArgs& a) {
                              std::to_string(a.height) + " OpenGL 4.5 window");
   }
   glfwMakeContextCurrent(window);
-  int status = 0;
   {
     gl::require_gl45();
     std::printf("%s", kHelp);
@@ -179,7 +178,7 @@ int run_view(const ViewArgs& a) {
   }
   glfwDestroyWindow(window);
   glfwTerminate();
-  return status;
+  return 0;
 }
 
 }  // namespace
