@@ -70,6 +70,17 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   EXPECT_EQ(lines, 6);
 
   test::TempDir dir;
+  test::write_text(dir.file("bench.json"), bench::results_json(o, results));
+  bench::BenchOptions read_options;
+  const auto back = bench::read_results_json(dir.file("bench.json"), read_options);
+  ASSERT_EQ(back.size(), results.size());
+  EXPECT_EQ(back[5].options.technique, "rsaa");
+  EXPECT_EQ(bench::results_json(read_options, back), bench::results_json(o, results));
+  const std::string report = bench::results_markdown(o, results);
+  EXPECT_NE(report.find("| edges | * noaa |"), std::string::npos) << report;
+  EXPECT_NE(report.find("RSAA 8x - 4x"), std::string::npos);
+  test::write_text(dir.file("broken.json"), "{\"format\": \"rsaa-bench\"}");
+  EXPECT_THROW(bench::read_results_json(dir.file("broken.json"), read_options), std::runtime_error);
   bench::plot_pareto(results, results[0].scene, dir.file("pareto.png"));
   bench::plot_pass_times(results, results[0].scene, dir.file("passes.png"));
   EXPECT_GT(std::filesystem::file_size(dir.file("pareto.png")), 1000u);

@@ -54,6 +54,13 @@ const TechniqueResult* cheapest_reaching(const std::vector<TechniqueResult>& res
 
 std::string results_json(const BenchOptions& options, const std::vector<TechniqueResult>& results);
 std::string results_csv(const std::vector<TechniqueResult>& results);
+// Reads results_json() output back (for re-reporting and re-plotting without measuring).
+// Throws std::runtime_error naming the file and field on a malformed file.
+std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOptions& options);
+
+// Markdown: every row, then per scene the paper's trades (8 vs 4 samples, SADP vs depth) and
+// where the RSAA variants sit against the Pareto front.
+std::string results_markdown(const BenchOptions& options, const std::vector<TechniqueResult>& results);
 
 // PNG plots made with OpenCV: PSNR against frame-time ratio with the Pareto front, and per-pass
 // stacked times, for one scene.

@@ -20,6 +20,7 @@ struct BenchArgs {
   bool quick = false;
   std::string out_dir = "out/bench";
   double target_psnr = 0.0;
+  std::string from_json;
 };
 
 std::vector<std::string> split(const std::string& list) {
@@ -50,12 +51,17 @@ int run_bench_command(BenchArgs a) {
   if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
     throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
 
-  gl::HeadlessContext context;
-  const auto results = bench::run_bench(o, [](const std::string& what, int done, int total) {
-    std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
-  });
-  write_file_atomically(a.out_dir + "/bench.json", bench::results_json(o, results));
-  write_file_atomically(a.out_dir + "/bench.csv", bench::results_csv(results));
+  std::vector<bench::TechniqueResult> results;
+  if (!a.from_json.empty()) {
+    results = bench::read_results_json(a.from_json, o);
+  } else {
+    gl::HeadlessContext context;
+    results = bench::run_bench(o, [](const std::string& what, int done, int total) {
+      std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
+    });
+    write_file_atomically(a.out_dir + "/bench.json", bench::results_json(o, results));
+    write_file_atomically(a.out_dir + "/bench.csv", bench::results_csv(results));
+  }
   std::vector<std::string> scenes;
   for (const auto& r : results)
     if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
@@ -63,16 +69,9 @@ int run_bench_command(BenchArgs a) {
     bench::plot_pareto(results, scene, a.out_dir + "/pareto-" + file_stem(scene) + ".png");
     bench::plot_pass_times(results, scene, a.out_dir + "/passes-" + file_stem(scene) + ".png");
   }
-
-  std::printf("%dx%d, median of %d timed frames after a warm-up, orbit of %d frames; * = Pareto front\n\n",
-              o.width, o.height, o.frames, o.orbit_frames);
-  std::printf("| scene | technique | PSNR dB | SSIM | luma err %% | orbit PSNR | flicker PSNR | frame ms | x noaa | B/px |\n");
-  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
-  for (const auto& r : results)
-    std::printf("| %s | %s%s | %.2f | %.4f | %.2f | %.2f | %.2f | %.1f | %.2f | %.0f |\n",
-                file_stem(r.scene).c_str(), r.pareto ? "* " : "", r.label.c_str(), r.psnr_db, r.ssim,
-                r.luma_error_share, r.orbit_psnr_db, r.flicker_psnr_db, r.frame_ms, r.frame_ratio,
-                r.bytes_per_pixel);
+  const std::string report = bench::results_markdown(o, results);
+  write_file_atomically(a.out_dir + "/report.md", report);
+  std::printf("%s", report.c_str());
   if (a.target_psnr > 0) {
     std::printf("\ncheapest technique reaching %.1f dB:\n", a.target_psnr);
     for (const std::string& scene : scenes) {
@@ -82,7 +81,7 @@ int run_bench_command(BenchArgs a) {
                        : "none of the techniques");
     }
   }
-  std::fprintf(stderr, "wrote %s/bench.json, bench.csv, pareto-*.png, passes-*.png\n", a.out_dir.c_str());
+  std::fprintf(stderr, "wrote %s/bench.json, bench.csv, report.md, pareto-*.png, passes-*.png\n", a.out_dir.c_str());
   return 0;
 }
 
@@ -105,6 +104,8 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_flag("--quick", args->quick, "CI-scale run: 2 scenes, 160x120, 3 frames, 3 orbit frames");
   cmd->add_option("--out-dir", args->out_dir, "Where bench.json, bench.csv and the plots go")->capture_default_str();
   cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)");
+  cmd->add_option("--from-json", args->from_json,
+                  "Report and plot a previous run's bench.json again instead of measuring");
   return [args] { return run_bench_command(*args); };
 }
 
