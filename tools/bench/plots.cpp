@@ -117,7 +117,7 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
                                                      {"pre-pass", {60, 60, 210}},
                                                      {"post-process", {60, 170, 60}},
                                                      {"resolve", {160, 160, 160}}};
-  const int width = 960, row_h = 24, left = 190, right = 30, top = 40;
+  const int width = 960, row_h = 24, left = 190, right = 70, top = 40;
   const int height = top + int(rows.size()) * row_h + 70;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   double longest = 0;
