@@ -12,6 +12,13 @@ int samples_or(const TechniqueOptions& o, int fallback) { return o.samples ? o.s
 
 }  // namespace
 
+TechniqueOptions technique_options(const std::string& technique, int samples) {
+  TechniqueOptions o;
+  o.technique = technique;
+  o.samples = samples;
+  return o;
+}
+
 const std::vector<std::string>& technique_names() {
   static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "rsaa"};
   return names;

@@ -21,6 +21,9 @@ struct TechniqueOptions {
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
 };
 
+// Options for a technique by name and sample count (0: its default), other fields defaulted.
+TechniqueOptions technique_options(const std::string& technique, int samples = 0);
+
 // Throws std::invalid_argument naming the bad option (unknown technique, unsupported sample
 // count, auth outside 0..2, ...).
 void validate(const TechniqueOptions& options);

@@ -33,13 +33,6 @@ class Runtime : public ::testing::Test {
     return render_frame(gpu, choose_camera(scene, std::nullopt), o, kWidth, kHeight);
   }
 
-  static TechniqueOptions technique(const std::string& name, int samples = 0) {
-    TechniqueOptions o;
-    o.technique = name;
-    o.samples = samples;
-    return o;
-  }
-
   static double psnr(const Image& a, const Image& reference) {
     return compare_images(to_display(a), to_display(reference)).psnr_db;
   }
@@ -63,20 +56,20 @@ TEST_F(Runtime, DriverPatternMatchesTheCheckedInGl4xTable) {
 }
 
 TEST_F(Runtime, EveryVariantRunsWithinMeasuredQualityBounds) {
-  const Image reference = render("builtin:default", technique("ssaa", 64));
+  const Image reference = render("builtin:default", technique_options("ssaa", 64));
   ASSERT_TRUE(all_finite(reference));
-  const Image noaa = render("builtin:default", technique("noaa"));
+  const Image noaa = render("builtin:default", technique_options("noaa"));
   const double noaa_psnr = psnr(noaa, reference);
   EXPECT_GT(noaa_psnr, 20.0);
   EXPECT_LT(noaa_psnr, 35.0);  // aliased: clearly below the references
-  const double msaa4 = psnr(render("builtin:default", technique("msaa", 4)), reference);
-  const double ssaa16 = psnr(render("builtin:default", technique("ssaa", 16)), reference);
+  const double msaa4 = psnr(render("builtin:default", technique_options("msaa", 4)), reference);
+  const double ssaa16 = psnr(render("builtin:default", technique_options("ssaa", 16)), reference);
   EXPECT_GT(msaa4, noaa_psnr + 4.0);
   EXPECT_GT(ssaa16, msaa4);
   for (int samples : {4, 8})
     for (const char* similarity : {"sadp", "depth"})
       for (int auth : {0, 1, 2}) {
-        TechniqueOptions o = technique("rsaa", samples);
+        TechniqueOptions o = technique_options("rsaa", samples);
         o.similarity = similarity;
         o.auth = auth;
         const Image image = render("builtin:default", o);
@@ -86,7 +79,7 @@ TEST_F(Runtime, EveryVariantRunsWithinMeasuredQualityBounds) {
         EXPECT_GT(gain, 2.0) << technique_label(o);
         EXPECT_LT(gain, 5.0) << technique_label(o);
       }
-  TechniqueOptions d3d4x = technique("rsaa", 4);
+  TechniqueOptions d3d4x = technique_options("rsaa", 4);
   d3d4x.pattern = "d3d4x";
   EXPECT_GT(psnr(render("builtin:default", d3d4x), reference), noaa_psnr + 2.0);
 }
@@ -155,14 +148,14 @@ TEST_F(Runtime, BuiltinScenesAndModelsLoadAndRender) {
   for (const std::string& name : builtin_scene_names()) {
     const Scene s = load_scene("builtin:" + name);
     EXPECT_GT(s.triangle_count(), 10u) << name;
-    EXPECT_TRUE(all_finite(render("builtin:" + name, technique("rsaa"))));
+    EXPECT_TRUE(all_finite(render("builtin:" + name, technique_options("rsaa"))));
   }
   for (const char* model : {"/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
                             "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf",
                             "/usr/share/assimp/models/OBJ/spider.obj"}) {
     const Scene s = load_scene(model);
     EXPECT_GT(s.triangle_count(), 100u) << model;
-    EXPECT_TRUE(all_finite(render(model, technique("rsaa")))) << model;
+    EXPECT_TRUE(all_finite(render(model, technique_options("rsaa")))) << model;
   }
   EXPECT_FALSE(load_scene("/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf").textures.empty());
 }

@@ -52,22 +52,15 @@ Camera orbit(const Camera& c, double degrees) {
   return out;
 }
 
-TechniqueOptions named(const std::string& technique, int samples) {
-  TechniqueOptions o;
-  o.technique = technique;
-  o.samples = samples;
-  return o;
-}
-
 }  // namespace
 
 std::vector<TechniqueOptions> default_techniques() {
-  std::vector<TechniqueOptions> list = {named("noaa", 0), named("fxaa", 0), named("msaa", 4),
-                                        named("msaa", 8), named("ssaa", 16)};
+  std::vector<TechniqueOptions> list = {technique_options("noaa", 0), technique_options("fxaa", 0), technique_options("msaa", 4),
+                                        technique_options("msaa", 8), technique_options("ssaa", 16)};
   for (int samples : {4, 8})
     for (const char* similarity : {"sadp", "depth"})
       for (int auth : {0, 1, 2}) {
-        TechniqueOptions o = named("rsaa", samples);
+        TechniqueOptions o = technique_options("rsaa", samples);
         o.similarity = similarity;
         o.auth = auth;
         list.push_back(o);
@@ -105,7 +98,7 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
     if (progress) progress(spec + ": 64x SSAA reference", done, total);
     std::vector<DisplayImage> reference;
     {
-      TechniqueOptions ssaa = named("ssaa", 64);
+      TechniqueOptions ssaa = technique_options("ssaa", 64);
       auto t = make_technique(ssaa, o.width, o.height);
       for (const Camera& c : cameras) {
         t->render(gpu, make_view(c, o.width, o.height), output.get());

@@ -20,16 +20,9 @@
 namespace rsaa::cli {
 namespace {
 
-TechniqueOptions technique_named(const char* name, int samples) {
-  TechniqueOptions o;
-  o.technique = name;
-  o.samples = samples;
-  return o;
-}
-
 struct ViewArgs {
   std::string scene = "builtin:default";
-  TechniqueOptions technique = technique_named("rsaa", 0);
+  TechniqueOptions technique = technique_options("rsaa", 0);
   int width = 800, height = 600;
   std::string camera;
   std::string screenshot = "rsaa-view-%d.png";
@@ -53,11 +46,11 @@ class Viewer {
   bool key(int k) {
     TechniqueOptions o = options_;
     switch (k) {
-      case GLFW_KEY_1: o = technique_named("noaa", 0); break;
-      case GLFW_KEY_2: o = technique_named("msaa", 4); break;
-      case GLFW_KEY_3: o = technique_named("msaa", 8); break;
-      case GLFW_KEY_4: o = technique_named("ssaa", 16); break;
-      case GLFW_KEY_5: o = technique_named("ssaa", 64); break;
+      case GLFW_KEY_1: o = technique_options("noaa", 0); break;
+      case GLFW_KEY_2: o = technique_options("msaa", 4); break;
+      case GLFW_KEY_3: o = technique_options("msaa", 8); break;
+      case GLFW_KEY_4: o = technique_options("ssaa", 16); break;
+      case GLFW_KEY_5: o = technique_options("ssaa", 64); break;
       case GLFW_KEY_6: o.technique = "rsaa"; o.samples = 8; o.pattern.clear(); break;
       case GLFW_KEY_7: o.technique = "rsaa"; o.samples = 4; break;
       case GLFW_KEY_S: o.similarity = "sadp"; break;
