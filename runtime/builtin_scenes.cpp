@@ -17,6 +17,9 @@ class MeshBuilder {
  public:
   explicit MeshBuilder(Scene& scene) : scene_(scene) {}
 
+  // The filter alpha of what is added next (ssaa-filtered kernel 3: 0 = soft, large kernel).
+  void set_filter_alpha(float alpha) { filter_alpha_ = alpha; }
+
   void triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 albedo) {
     const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
     add({a, n, {0, 0}, albedo}, {b, n, {1, 0}, albedo}, {c, n, {0, 1}, albedo});
@@ -82,12 +85,14 @@ class MeshBuilder {
   }
 
  private:
-  void add(const SceneVertex& a, const SceneVertex& b, const SceneVertex& c) {
+  void add(SceneVertex a, SceneVertex b, SceneVertex c) {
     const auto base = static_cast<std::uint32_t>(scene_.vertices.size());
+    a.filter_alpha = b.filter_alpha = c.filter_alpha = filter_alpha_;
     scene_.vertices.insert(scene_.vertices.end(), {a, b, c});
     scene_.indices.insert(scene_.indices.end(), {base, base + 1, base + 2});
   }
   Scene& scene_;
+  float filter_alpha_ = 1.0f;
 };
 
 Camera look(glm::vec3 eye, glm::vec3 target, float fov, float near_plane, float far_plane) {
@@ -133,8 +138,10 @@ Scene showcase() {
     const float x = -4.5f + 1.5f * i;
     m.cylinder({x, 0, -3.0f}, {x, 2.6f, -3.0f}, 0.05f, 8, kGrey);
   }
+  m.set_filter_alpha(0.0f);  // the wires are soft for ssaa-filtered --kernel 3
   for (int j = 0; j < 4; ++j)
     m.cylinder({-4.6f, 0.5f + 0.6f * j, -3.0f}, {4.6f, 0.8f + 0.6f * j, -3.0f}, 0.03f, 6, kWhite);
+  m.set_filter_alpha(1.0f);
   siemens_star(m, {0.0f, 2.9f, -2.9f}, 0.9f, 18, 0.05f);
   s.camera = look({0.3f, 2.6f, 7.0f}, {0.0f, 1.0f, -0.5f}, 45.0f, 0.5f, 40.0f);
   return s;
@@ -144,6 +151,7 @@ Scene fence() {
   Scene s;
   MeshBuilder m(s);
   m.quad({-6, -1, -4}, {6, -1, -4}, {6, 5, -4}, {-6, 5, -4}, {0.3f, 0.45f, 0.6f});
+  m.set_filter_alpha(0.0f);  // soft wires for ssaa-filtered --kernel 3
   for (int i = 0; i <= 24; ++i) {
     const float x = -4.0f + 8.0f * i / 24;
     m.cylinder({x - 0.3f, -0.5f, 0}, {x + 0.3f, 4.5f, 0}, 0.015f, 6, kYellow);

@@ -28,7 +28,8 @@ GpuScene::GpuScene(const Scene& scene)
   } attributes[] = {{0, 3, offsetof(SceneVertex, position)},
                     {1, 3, offsetof(SceneVertex, normal)},
                     {2, 2, offsetof(SceneVertex, uv)},
-                    {3, 3, offsetof(SceneVertex, albedo)}};
+                    {3, 3, offsetof(SceneVertex, albedo)},
+                    {4, 1, offsetof(SceneVertex, filter_alpha)}};
   for (const auto& a : attributes) {
     glEnableVertexArrayAttrib(id, a.location);
     glVertexArrayAttribFormat(id, a.location, a.size, GL_FLOAT, GL_FALSE, GLuint(a.offset));

@@ -15,7 +15,7 @@ class GpuScene {
   explicit GpuScene(const Scene& scene);
 
   // Draws every triangle with `program` bound. Attribute locations: 0 position, 1 normal, 2 uv,
-  // 3 albedo. Sets u_texture (unit 0), u_has_texture and u_primitive_base (so that primitive ids
+  // 3 albedo, 4 filter alpha. Sets u_texture (unit 0), u_has_texture and u_primitive_base (so that primitive ids
   // are unique across draw calls) when the program has them.
   void draw(GLuint program) const;
 

@@ -18,6 +18,7 @@ struct SceneVertex {
   glm::vec3 normal{0.0f, 1.0f, 0.0f};  // smooth shading normal
   glm::vec2 uv{0.0f};
   glm::vec3 albedo{0.8f};  // linear
+  float filter_alpha = 1.0f;  // ssaa-filtered kernel 3: 1 = small kernel (sharp), 0 = large (soft)
 };
 
 // 8-bit sRGB RGBA texture, top row first.

@@ -20,7 +20,7 @@ TechniqueOptions technique_options(const std::string& technique, int samples) {
 }
 
 const std::vector<std::string>& technique_names() {
-  static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "rsaa"};
+  static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa"};
   return names;
 }
 
@@ -34,6 +34,9 @@ void validate(const TechniqueOptions& o) {
   } else if (o.technique == "ssaa") {
     const int n = samples_or(o, 64);
     if (n != 16 && n != 64) bad("ssaa --samples must be 16 or 64, not " + std::to_string(n));
+  } else if (o.technique == "ssaa-filtered") {
+    if (o.samples != 0 && o.samples != 4) bad("ssaa-filtered always uses 4 samples (2x2)");
+    if (o.kernel < 1 || o.kernel > 3) bad("ssaa-filtered --kernel must be 1, 2 or 3");
   } else if (o.technique == "rsaa") {
     const int n = samples_or(o, 8);
     if (n != 4 && n != 8) bad("rsaa --samples must be 4 or 8, not " + std::to_string(n));
@@ -60,6 +63,7 @@ std::string technique_label(const TechniqueOptions& o) {
   if (o.technique == "noaa" || o.technique == "fxaa") return o.technique;
   if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
   if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
+  if (o.technique == "ssaa-filtered") return "ssaa-filtered k" + std::to_string(o.kernel);
   const int n = samples_or(o, 8);
   std::string label = "rsaa " + std::to_string(n) + "x ";
   if (n == 4) label += (o.pattern.empty() ? std::string("gl4x") : o.pattern) + " ";
@@ -70,6 +74,7 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
   validate(o);
   if (o.technique == "noaa") return make_noaa(width, height);
   if (o.technique == "fxaa") return make_fxaa(width, height);
+  if (o.technique == "ssaa-filtered") return make_filtered_ssaa(o.kernel, width, height);
   if (o.technique == "msaa") {
     if (samples_or(o, 4) == 4) return make_hardware_msaa(4, width, height);
     return make_jittered_supersampling(builtin_pattern("d3d8x").positions, width, height);

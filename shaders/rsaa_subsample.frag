@@ -8,6 +8,7 @@ in FragmentData {
   vec3 view_normal;
   vec2 uv;
   vec3 albedo;
+  float filter_alpha;
   flat vec3 face_normal;
 } f_in;
 

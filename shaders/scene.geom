@@ -8,6 +8,7 @@ in VertexData {
   vec3 view_normal;
   vec2 uv;
   vec3 albedo;
+  float filter_alpha;
 } v_in[];
 
 out FragmentData {
@@ -15,6 +16,7 @@ out FragmentData {
   vec3 view_normal;
   vec2 uv;
   vec3 albedo;
+  float filter_alpha;
   flat vec3 face_normal;
 } g_out;
 
@@ -32,6 +34,7 @@ void main() {
     g_out.view_normal = v_in[i].view_normal;
     g_out.uv = v_in[i].uv;
     g_out.albedo = v_in[i].albedo;
+    g_out.filter_alpha = v_in[i].filter_alpha;
     g_out.face_normal = face;
     EmitVertex();
   }

@@ -4,6 +4,7 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
 layout(location = 3) in vec3 a_albedo;
+layout(location = 4) in float a_filter_alpha;  // ssaa-filtered kernel 3: 1 sharp, 0 soft
 
 uniform mat4 u_view;
 uniform mat4 u_projection;
@@ -14,6 +15,7 @@ out VertexData {
   vec3 view_normal;
   vec2 uv;
   vec3 albedo;
+  float filter_alpha;
 } v_out;
 
 void main() {
@@ -22,6 +24,7 @@ void main() {
   v_out.view_normal = mat3(u_view) * a_normal;
   v_out.uv = a_uv;
   v_out.albedo = a_albedo;
+  v_out.filter_alpha = a_filter_alpha;
   vec4 clip = u_projection * view;
   clip.xy += u_jitter_ndc * clip.w;
   gl_Position = clip;

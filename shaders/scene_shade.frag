@@ -8,6 +8,7 @@ in FragmentData {
   vec3 view_normal;
   vec2 uv;
   vec3 albedo;
+  float filter_alpha;
   flat vec3 face_normal;
 } f_in;
 
@@ -31,7 +32,8 @@ void main() {
   float specular = pow(max(dot(reflect(-light, n), to_eye), 0.0), 32.0);
   vec3 albedo = f_in.albedo;
   if (u_has_texture) albedo *= texture(u_texture, f_in.uv).rgb;
-  o_colour = vec4(albedo * (0.12 + 0.88 * diffuse) + 0.25 * specular, 1.0);
+  // Alpha carries the object's filter alpha (ssaa-filtered kernel 3); 1 unless a scene says so.
+  o_colour = vec4(albedo * (0.12 + 0.88 * diffuse) + 0.25 * specular, f_in.filter_alpha);
 #ifdef RSAA_GBUFFER
   o_normal = rsaa_encode_normal(f_in.face_normal);
   o_primitive = u_primitive_base + uint(gl_PrimitiveID) + 1u;

@@ -40,8 +40,8 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   gl::HeadlessContext context;
   bench::BenchOptions o;
   o.scenes = {"builtin:edges"};
-  o.techniques = bench::default_techniques();
-  o.techniques.resize(6);  // noaa, fxaa, msaa 4x/8x, ssaa 16x, one RSAA variant
+  o.techniques = {technique_options("noaa"), technique_options("fxaa"), technique_options("msaa", 4),
+                  technique_options("msaa", 8), technique_options("ssaa", 16), technique_options("rsaa", 8)};
   o.width = 48, o.height = 36, o.frames = 2, o.orbit_frames = 2;
   const auto results = bench::run_bench(o, nullptr);
   ASSERT_EQ(results.size(), 6u);

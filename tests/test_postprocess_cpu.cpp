@@ -82,3 +82,41 @@ TEST(PostprocessCpu, NonFiniteColoursNeverSpreadAndHdrPassesThrough) {
 
 }  // namespace
 }  // namespace rsaa
+
+#include "core/filtered_downsample.h"
+
+namespace rsaa {
+namespace {
+
+Image one_bright_texel(int w, int h, int bx, int by) {
+  Image img(w, h);
+  img.at(bx, by) = {1, 1, 1};
+  return img;
+}
+
+TEST(FilteredDownsample, KernelWeightsMatchTheirDefinition) {
+  // Output pixel (2, 2) owns supersampled texels (4..5, 4..5).
+  const Image hi = one_bright_texel(12, 12, 5, 5);
+  const std::vector<float> sharp(144, 1.0f), soft(144, 0.0f);
+  EXPECT_FLOAT_EQ(filtered_downsample(hi, sharp, 1).at(2, 2).r, 0.25f);  // 2x2 box
+  EXPECT_FLOAT_EQ(filtered_downsample(hi, sharp, 2).at(2, 2).r, 0.15f);  // 3/5 over 4 own texels
+  EXPECT_FLOAT_EQ(filtered_downsample(hi, sharp, 3).at(2, 2).r, 0.15f);  // alpha 1: kernel 2
+  EXPECT_FLOAT_EQ(filtered_downsample(hi, soft, 3).at(2, 2).r, 0.05f);   // alpha 0: large kernel
+  // Every kernel keeps a uniform image uniform (weights sum to 1), borders included.
+  Image grey(8, 6);
+  for (Rgb& p : grey.pixels) p = {0.5f, 0.25f, 2.0f};
+  for (int k = 1; k <= 3; ++k)
+    for (const Rgb& p : filtered_downsample(grey, std::vector<float>(48, 0.5f), k).pixels) {
+      EXPECT_FLOAT_EQ(p.r, 0.5f);
+      EXPECT_FLOAT_EQ(p.b, 2.0f);
+    }
+}
+
+TEST(FilteredDownsample, RejectsBadInput) {
+  EXPECT_THROW(filtered_downsample(Image(3, 4), std::vector<float>(12), 1), std::invalid_argument);
+  EXPECT_THROW(filtered_downsample(Image(4, 4), std::vector<float>(15), 1), std::invalid_argument);
+  EXPECT_THROW(filtered_downsample(Image(4, 4), std::vector<float>(16), 4), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rsaa

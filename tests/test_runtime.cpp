@@ -220,3 +220,47 @@ TEST_F(Runtime, NonFiniteColoursDoNotSpreadInTheGlPostProcess) {
 
 }  // namespace
 }  // namespace rsaa
+
+#include "core/filtered_downsample.h"
+
+namespace rsaa {
+namespace {
+
+TEST_F(Runtime, FilteredSsaaEqualsItsCpuReference) {
+  const Scene scene = load_scene("builtin:default");  // its wires have filter alpha 0
+  const GpuScene gpu(scene);
+  const Camera camera = choose_camera(scene, std::nullopt);
+  // The supersampled frame, as the technique draws it, with its alpha.
+  const int w2 = 2 * kWidth, h2 = 2 * kHeight;
+  const gl::Texture hi = gl::make_texture_2d(GL_RGBA16F, w2, h2);
+  const gl::Texture depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, w2, h2);
+  const gl::Framebuffer fb = gl::make_framebuffer({{hi.get()}}, {depth.get()});
+  SceneRenderer renderer;
+  clear_to_background(fb.get(), gpu);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+  SceneRenderer::draw(gpu, make_view(camera, w2, h2), {0, 0}, renderer.shade_program());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  std::vector<float> rgba(std::size_t(w2) * h2 * 4);
+  glGetTextureImage(hi.get(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * 4), rgba.data());
+  Image supersampled = read_back_image(hi.get(), w2, h2);
+  std::vector<float> alpha(std::size_t(w2) * h2);
+  int soft = 0;
+  for (int y = 0; y < h2; ++y)
+    for (int x = 0; x < w2; ++x) {
+      alpha[std::size_t(y) * w2 + x] = rgba[(std::size_t(h2 - 1 - y) * w2 + x) * 4 + 3];
+      soft += alpha[std::size_t(y) * w2 + x] < 0.5f;
+    }
+  EXPECT_GT(soft, 50);  // the wires are there, with alpha 0
+  for (int kernel : {1, 2, 3}) {
+    TechniqueOptions o = technique_options("ssaa-filtered");
+    o.kernel = kernel;
+    const DisplayImage gl = to_display(render_frame(gpu, camera, o, kWidth, kHeight));
+    const DisplayImage cpu = to_display(filtered_downsample(supersampled, alpha, kernel));
+    int worst = 0;
+    for (std::size_t i = 0; i < gl.rgb.size(); ++i) worst = std::max(worst, std::abs(gl.rgb[i] - cpu.rgb[i]));
+    EXPECT_LE(worst, 1) << "kernel " << kernel;
+  }
+}
+
+}  // namespace
+}  // namespace rsaa

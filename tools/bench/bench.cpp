@@ -55,8 +55,14 @@ Camera orbit(const Camera& c, double degrees) {
 }  // namespace
 
 std::vector<TechniqueOptions> default_techniques() {
-  std::vector<TechniqueOptions> list = {technique_options("noaa", 0), technique_options("fxaa", 0), technique_options("msaa", 4),
-                                        technique_options("msaa", 8), technique_options("ssaa", 16)};
+  std::vector<TechniqueOptions> list = {technique_options("noaa", 0), technique_options("fxaa", 0),
+                                        technique_options("msaa", 4), technique_options("msaa", 8),
+                                        technique_options("ssaa", 16)};
+  for (int kernel : {1, 2, 3}) {
+    TechniqueOptions o = technique_options("ssaa-filtered", 0);
+    o.kernel = kernel;
+    list.push_back(o);
+  }
   for (int samples : {4, 8})
     for (const char* similarity : {"sadp", "depth"})
       for (int auth : {0, 1, 2}) {
@@ -201,7 +207,8 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                                            {"samples", r.options.samples},
                                            {"similarity", r.options.similarity},
                                            {"auth", r.options.auth},
-                                           {"pattern", r.options.pattern}}},
+                                           {"pattern", r.options.pattern},
+                                           {"kernel", r.options.kernel}}},
                               {"passes", passes},
                               {"frame_ms", r.frame_ms},
                               {"frame_ratio_to_noaa", r.frame_ratio},
@@ -251,6 +258,7 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       r.options.similarity = opt.at("similarity");
       r.options.auth = opt.at("auth");
       r.options.pattern = opt.at("pattern");
+      r.options.kernel = opt.value("kernel", 2);
       for (const auto& p : e.at("passes"))
         r.pass_medians.push_back({p.at("pass"), p.at("gl_timer_ms"), p.at("wall_ms")});
       r.frame_ms = e.at("frame_ms");

@@ -20,6 +20,7 @@ cv::Scalar family_colour(const TechniqueResult& r) {
   if (r.options.technique == "fxaa") return {160, 40, 160};
   if (r.options.technique == "msaa") return {200, 110, 30};
   if (r.options.technique == "ssaa") return {40, 150, 40};
+  if (r.options.technique == "ssaa-filtered") return {120, 160, 20};
   return r.options.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);
 }
 

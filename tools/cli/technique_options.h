@@ -11,7 +11,7 @@ namespace rsaa::cli {
 constexpr double kSceneLoadSeconds = 120.0;
 
 inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
-  cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | rsaa")->capture_default_str();
+  cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | ssaa-filtered | rsaa")->capture_default_str();
   cmd->add_option("--samples", o.samples,
                   "msaa: 4 (hardware) | 8 (jittered); ssaa: 16 | 64; rsaa: 4 | 8 (default 8)");
   cmd->add_option("--similarity", o.similarity, "rsaa: sadp | depth")->capture_default_str();
@@ -21,6 +21,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "rsaa similarity threshold (default 0.4: SADP units, or percent of depth)");
   cmd->add_option("--pattern", o.pattern, "rsaa 4x sample pattern: gl4x (driver, default) | d3d4x");
   cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
+      ->capture_default_str();
+  cmd->add_option("--kernel", o.kernel,
+                  "ssaa-filtered downsampling: 1 box 2x2, 2 five-tap rotated grid, 3 lerp of a large "
+                  "and the five-tap kernel by the object's filter alpha")
       ->capture_default_str();
 }
 

@@ -24,18 +24,19 @@ const char* kVertex = R"(
 layout(location = 0) in vec3 a_position;
 uniform mat4 u_view, u_projection;
 uniform vec2 u_jitter_ndc;
-out VertexData { vec3 view_position; vec3 view_normal; vec2 uv; vec3 albedo; } v_out;
+out VertexData { vec3 view_position; vec3 view_normal; vec2 uv; vec3 albedo; float filter_alpha; } v_out;
 void main() {
   vec4 view = u_view * vec4(a_position, 1.0);
   v_out.view_position = view.xyz;
   v_out.view_normal = vec3(0, 0, 1);
   v_out.uv = vec2(0);
   v_out.albedo = vec3(a_position.z > 0.0 ? 0.9 : 0.1, 0.3, a_position.z > 0.0 ? 0.1 : 0.8);
+  v_out.filter_alpha = 1.0;
   gl_Position = u_projection * view + vec4(u_jitter_ndc, 0, 0) * (u_projection * view).w;
 })";
 
 const char* kFragment = R"(
-in FragmentData { vec3 view_position; vec3 view_normal; vec2 uv; vec3 albedo; flat vec3 face_normal; } f_in;
+in FragmentData { vec3 view_position; vec3 view_normal; vec2 uv; vec3 albedo; float filter_alpha; flat vec3 face_normal; } f_in;
 layout(location = 0) out vec4 o_colour;
 layout(location = 1) out uvec2 o_normal;
 layout(location = 2) out uint o_primitive;
