@@ -19,6 +19,19 @@ TechniqueOptions technique_options(const std::string& technique, int samples) {
   return o;
 }
 
+std::vector<TechniqueOptions> rsaa_variants() {
+  std::vector<TechniqueOptions> list;
+  for (int samples : {4, 8})
+    for (const char* similarity : {"sadp", "depth"})
+      for (int auth : {0, 1, 2}) {
+        TechniqueOptions o = technique_options("rsaa", samples);
+        o.similarity = similarity;
+        o.auth = auth;
+        list.push_back(o);
+      }
+  return list;
+}
+
 const std::vector<std::string>& technique_names() {
   static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa"};
   return names;

@@ -25,6 +25,9 @@ struct TechniqueOptions {
 // Options for a technique by name and sample count (0: its default), other fields defaulted.
 TechniqueOptions technique_options(const std::string& technique, int samples = 0);
 
+// The paper's 12 RSAA variants: samples 4 | 8 x similarity sadp | depth x auth 0 | 1 | 2.
+std::vector<TechniqueOptions> rsaa_variants();
+
 // Throws std::invalid_argument naming the bad option (unknown technique, unsupported sample
 // count, auth outside 0..2, ...).
 void validate(const TechniqueOptions& options);

@@ -63,14 +63,7 @@ std::vector<TechniqueOptions> default_techniques() {
     o.kernel = kernel;
     list.push_back(o);
   }
-  for (int samples : {4, 8})
-    for (const char* similarity : {"sadp", "depth"})
-      for (int auth : {0, 1, 2}) {
-        TechniqueOptions o = technique_options("rsaa", samples);
-        o.similarity = similarity;
-        o.auth = auth;
-        list.push_back(o);
-      }
+  for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
   return list;
 }
 
