@@ -92,10 +92,10 @@ class Reader {
 OffsetSource parse_source(const Reader& reader, const json& v, const std::string& where) {
   if (v.is_string()) {
     const std::string s = v.get<std::string>();
-    for (OffsetSource source : {OffsetSource::OneLine, OffsetSource::TwoLine, OffsetSource::Fallback})
-      if (s == to_string(source)) return source;
+    for (int k = 0; k < kOffsetSourceCount; ++k)
+      if (s == to_string(OffsetSource(k))) return OffsetSource(k);
   }
-  reader.fail(where, "expected \"one-line\", \"two-line\" or \"fallback\"");
+  reader.fail(where, "expected \"one-line\", \"two-line\", \"fallback\" or \"scene\"");
 }
 
 }  // namespace
@@ -105,6 +105,7 @@ const char* to_string(OffsetSource source) {
     case OffsetSource::OneLine: return "one-line";
     case OffsetSource::TwoLine: return "two-line";
     case OffsetSource::Fallback: return "fallback";
+    case OffsetSource::Scene: return "scene";
   }
   return "fallback";
 }
@@ -289,8 +290,10 @@ std::string shader_table(const OffsetTable& table, bool glsl) {
 std::string offset_table_glsl(const OffsetTable& table) { return shader_table(table, true); }
 std::string offset_table_hlsl(const OffsetTable& table) { return shader_table(table, false); }
 
-std::vector<std::string> write_offset_table_files(const OffsetTable& table, const std::string& dir) {
-  const std::string base = (dir.empty() ? std::string(".") : dir) + "/" + table.pattern.name;
+std::vector<std::string> write_offset_table_files(const OffsetTable& table, const std::string& dir,
+                                                  const std::string& stem) {
+  const std::string base =
+      (dir.empty() ? std::string(".") : dir) + "/" + (stem.empty() ? table.pattern.name : stem);
   const std::vector<std::pair<std::string, std::string>> files = {
       {base + ".json", offset_table_json(table)},
       {base + ".glsl", offset_table_glsl(table)},

@@ -15,9 +15,11 @@
 
 namespace rsaa {
 
-// Which rule produced a table entry.
-enum class OffsetSource { OneLine, TwoLine, Fallback };
-const char* to_string(OffsetSource source);  // "one-line", "two-line", "fallback"
+// Which rule produced a table entry. Scene: fitted on cases harvested from a scene's renders
+// (rsaa train --from-scene); an addition to DESIGN.md section 3's three values.
+enum class OffsetSource { OneLine, TwoLine, Fallback, Scene };
+constexpr int kOffsetSourceCount = 4;
+const char* to_string(OffsetSource source);  // "one-line", "two-line", "fallback", "scene"
 
 // Tables are 2^n entries; beyond 16 samples they stop being practical lookup tables.
 constexpr int kMaxTableSamples = 16;
@@ -53,7 +55,9 @@ std::string offset_table_glsl(const OffsetTable& table);
 // HLSL: pixel space (+y down), the JSON's numbers.
 std::string offset_table_hlsl(const OffsetTable& table);
 
-// Writes DIR/P.json, DIR/P.glsl and DIR/P.hlsl together (all or none). Returns the paths.
-std::vector<std::string> write_offset_table_files(const OffsetTable& table, const std::string& dir);
+// Writes DIR/STEM.json, DIR/STEM.glsl and DIR/STEM.hlsl together (all or none); STEM is the
+// pattern name unless given. Returns the paths.
+std::vector<std::string> write_offset_table_files(const OffsetTable& table, const std::string& dir,
+                                                  const std::string& stem = "");
 
 }  // namespace rsaa

@@ -48,7 +48,7 @@ double case_error(const CaseRecord& c, Vec2 offset) {
 TableAccuracy evaluate_table(const OffsetTable& table, const std::vector<CaseRecord>& cases) {
   using Errors = std::array<std::vector<double>, kCaseKindCount>;
   Errors by_table, by_zero, by_fallback;
-  std::array<Errors, 3> by_source;
+  std::array<Errors, kOffsetSourceCount> by_source;
   std::vector<Vec2> fallback(table.offsets.size());
   for (std::size_t m = 0; m < fallback.size(); ++m) fallback[m] = fallback_offset(table.pattern, m);
 
@@ -73,7 +73,7 @@ TableAccuracy evaluate_table(const OffsetTable& table, const std::vector<CaseRec
     a.table[k] = error_stats(std::move(by_table[k]));
     a.zero_offset[k] = error_stats(std::move(by_zero[k]));
     a.fallback_rule[k] = error_stats(std::move(by_fallback[k]));
-    for (int s = 0; s < 3; ++s) a.by_source[s][k] = error_stats(std::move(by_source[s][k]));
+    for (int s = 0; s < kOffsetSourceCount; ++s) a.by_source[s][k] = error_stats(std::move(by_source[s][k]));
   }
   return a;
 }

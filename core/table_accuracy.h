@@ -31,7 +31,7 @@ struct TableAccuracy {
   std::array<ErrorStats, kCaseKindCount> zero_offset{};
   std::array<ErrorStats, kCaseKindCount> fallback_rule{};
   // Table errors of the cases whose mask entry came from each rule ([source][kind]).
-  std::array<std::array<ErrorStats, kCaseKindCount>, 3> by_source{};
+  std::array<std::array<ErrorStats, kCaseKindCount>, kOffsetSourceCount> by_source{};
 };
 
 // The estimate of one case at an offset, and its error against the exact coverage.

@@ -65,6 +65,7 @@ TEST(OffsetTableJson, RejectsBrokenFiles) {
   expect_rejected(edited("0.123456", "1.5"), "offsets[3]: expected finite numbers within [-1, 1]");
   expect_rejected(edited("0.123456", "\"x\""), "offsets[3]: expected a pair of numbers");
   expect_rejected(edited("\"one-line\"", "\"three-line\""), "source[3]");
+  EXPECT_NO_THROW(parse_offset_table(edited("\"one-line\"", "\"scene\""), "scene.json"));
   expect_rejected(edited("424242", "-1"), "cases_per_mask[3]");
   expect_rejected(edited("424242", "0.5"), "cases_per_mask[3]");
   expect_rejected(edited("[-0.125, -0.375]", "[-0.125, -0.4]"), "does not match the built-in");

@@ -35,7 +35,7 @@ nlohmann::json accuracy_json(const std::string& file, const OffsetTable& table,
     out["results"][to_string(CaseKind(k))] = {{"table", stats_json(acc.table[k])},
                                               {"zero_offset", stats_json(acc.zero_offset[k])},
                                               {"fallback_rule", stats_json(acc.fallback_rule[k])}};
-    for (int s = 0; s < 3; ++s)
+    for (int s = 0; s < kOffsetSourceCount; ++s)
       out["by_source"][to_string(OffsetSource(s))][to_string(CaseKind(k))] =
           stats_json(acc.by_source[s][k]);
   }
@@ -68,8 +68,9 @@ void print_one(const std::string& file, const OffsetTable& table, const TableAcc
     print_row("fallback rule", acc.fallback_rule[k]);
   }
   std::printf("  table error by the rule behind each case's mask entry (50/50 mix)\n");
-  for (int s = 0; s < 3; ++s) {
+  for (int s = 0; s < kOffsetSourceCount; ++s) {
     const ErrorStats& st = acc.by_source[s][kMix];
+    if (st.count == 0 && OffsetSource(s) == OffsetSource::Scene) continue;
     print_row(std::string(to_string(OffsetSource(s))) + " (" + std::to_string(st.count) + " cases)",
               st);
   }
