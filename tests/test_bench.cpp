@@ -142,3 +142,22 @@ TEST(SceneTables, FitsTheMasksASceneReachesAndMeasuresHeldOutViews) {
 
 }  // namespace
 }  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+TEST(PlotCsv, DrawsColumnsAndRejectsBadTables) {
+  test::TempDir dir;
+  test::write_text(dir.file("t.csv"), "cases,a,b\n1000,0.1,0.2\n10000,0.05,0.1\n100000,0.04,0.08\n");
+  bench::plot_csv(dir.file("t.csv"), "cases", {"a", "b"}, true, "title", dir.file("t.png"));
+  EXPECT_GT(std::filesystem::file_size(dir.file("t.png")), 1000u);
+  EXPECT_THROW(bench::plot_csv(dir.file("t.csv"), "cases", {"c"}, false, "", dir.file("x.png")), std::runtime_error);
+  test::write_text(dir.file("bad.csv"), "x,y\n1,2\n2,oops\n");
+  EXPECT_THROW(bench::plot_csv(dir.file("bad.csv"), "x", {"y"}, false, "", dir.file("x.png")), std::runtime_error);
+  test::write_text(dir.file("neg.csv"), "x,y\n-1,2\n2,3\n");
+  EXPECT_THROW(bench::plot_csv(dir.file("neg.csv"), "x", {"y"}, true, "", dir.file("x.png")), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+}
+
+}  // namespace
+}  // namespace rsaa

@@ -70,3 +70,13 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
                      const std::string& path);
 
 }  // namespace rsaa::bench
+
+namespace rsaa::bench {
+
+// A line chart of one or more y columns against an x column of a CSV table (header row, numbers
+// below), for the trade curves. Throws std::runtime_error naming the file and column.
+void plot_csv(const std::string& csv_path, const std::string& x_column,
+              const std::vector<std::string>& y_columns, bool log_x, const std::string& title,
+              const std::string& png_path);
+
+}  // namespace rsaa::bench

@@ -151,3 +151,88 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
 }
 
 }  // namespace rsaa::bench
+
+#include <fstream>
+#include <sstream>
+
+namespace rsaa::bench {
+
+void plot_csv(const std::string& csv_path, const std::string& x_column, const std::vector<std::string>& y_columns,
+              bool log_x, const std::string& title, const std::string& png_path) {
+  std::ifstream in(csv_path);
+  if (!in) throw std::runtime_error(csv_path + ": cannot open");
+  std::string line;
+  std::vector<std::string> header;
+  if (!std::getline(in, line)) throw std::runtime_error(csv_path + ": empty");
+  {
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) header.push_back(cell);
+  }
+  const auto column = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) throw std::runtime_error(csv_path + ": no column '" + name + "'");
+    return std::size_t(it - header.begin());
+  };
+  const std::size_t xc = column(x_column);
+  std::vector<std::size_t> ycs;
+  for (const auto& y : y_columns) ycs.push_back(column(y));
+  std::vector<double> xs;
+  std::vector<std::vector<double>> ys(ycs.size());
+  for (int row = 2; std::getline(in, line); ++row) {
+    if (line.empty()) continue;
+    std::vector<double> values;
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) {
+      try {
+        values.push_back(std::stod(cell));
+      } catch (const std::exception&) {
+        throw std::runtime_error(csv_path + ": row " + std::to_string(row) + ": '" + cell + "' is not a number");
+      }
+    }
+    if (values.size() != header.size()) throw std::runtime_error(csv_path + ": row " + std::to_string(row) + " has " + std::to_string(values.size()) + " cells");
+    if (log_x && !(values[xc] > 0)) throw std::runtime_error(csv_path + ": log x needs positive values");
+    xs.push_back(log_x ? std::log10(values[xc]) : values[xc]);
+    for (std::size_t k = 0; k < ycs.size(); ++k) ys[k].push_back(values[ycs[k]]);
+  }
+  if (xs.size() < 2) throw std::runtime_error(csv_path + ": needs at least two rows");
+  double x_lo = *std::min_element(xs.begin(), xs.end()), x_hi = *std::max_element(xs.begin(), xs.end());
+  double y_lo = 1e300, y_hi = -1e300;
+  for (const auto& s : ys)
+    for (double v : s) y_lo = std::min(y_lo, v), y_hi = std::max(y_hi, v);
+  const double y_pad = std::max(1e-9, 0.08 * (y_hi - y_lo));
+  y_lo -= y_pad, y_hi += y_pad;
+  if (x_hi <= x_lo) x_hi = x_lo + 1;
+  const int width = 800, height = 480, left = 90, right = 30, top = 50, bottom = 60;
+  cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  const auto px = [&](double x) { return left + int((x - x_lo) / (x_hi - x_lo) * (width - left - right)); };
+  const auto py = [&](double y) { return height - bottom - int((y - y_lo) / (y_hi - y_lo) * (height - top - bottom)); };
+  cv::rectangle(canvas, {left, top}, {width - right, height - bottom}, kInk);
+  for (int t = 0; t <= 4; ++t) {
+    const double y = y_lo + t * (y_hi - y_lo) / 4;
+    cv::line(canvas, {left, py(y)}, {width - right, py(y)}, kGrid);
+    char label[32];
+    std::snprintf(label, sizeof label, "%.4g", y);
+    text(canvas, label, {5, py(y) + 5});
+  }
+  for (double x : xs) {
+    char label[32];
+    std::snprintf(label, sizeof label, "%.4g", log_x ? std::pow(10.0, x) : x);
+    text(canvas, label, {px(x) - 15, height - bottom + 20});
+  }
+  text(canvas, title, {left, 30}, 0.55);
+  text(canvas, x_column + (log_x ? " (log scale)" : ""), {width / 2 - 60, height - 15}, 0.5);
+  const cv::Scalar colours[] = {{40, 40, 210}, {200, 110, 30}, {40, 150, 40}, {160, 40, 160}};
+  for (std::size_t k = 0; k < ys.size(); ++k) {
+    const cv::Scalar c = colours[k % 4];
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      cv::circle(canvas, {px(xs[i]), py(ys[k][i])}, 4, c, -1, cv::LINE_AA);
+      if (i) cv::line(canvas, {px(xs[i - 1]), py(ys[k][i - 1])}, {px(xs[i]), py(ys[k][i])}, c, 2, cv::LINE_AA);
+    }
+    text(canvas, y_columns[k], {width - right - 200, top + 20 + 18 * int(k)}, 0.45, c);
+  }
+  save(canvas, png_path);
+}
+
+}  // namespace rsaa::bench

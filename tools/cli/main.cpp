@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   add(rsaa::cli::add_compare_command);
   add(rsaa::cli::add_view_command);
   add(rsaa::cli::add_bench_command);
+  add(rsaa::cli::add_plot_command);
 
   try {
     app.parse(argc, argv);
