@@ -30,6 +30,13 @@ Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float fov_y_degree
   return c;
 }
 
+Camera orbit_camera(const Camera& c, double degrees) {
+  const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(float(degrees)), c.up);
+  Camera out = c;
+  out.eye = c.target + glm::vec3(turn * glm::vec4(c.eye - c.target, 0.0f));
+  return out;
+}
+
 Camera parse_camera(const std::string& text, const glm::vec3& lo, const glm::vec3& hi) {
   std::vector<float> v;
   std::stringstream in(text);

@@ -22,6 +22,10 @@ struct Camera {
 // A camera that sees the whole box from a fixed oblique direction, near/far fitted to it.
 Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float fov_y_degrees = 45.0f);
 
+// The camera turned by `degrees` about its up axis through its target (bench and scene-table
+// camera paths).
+Camera orbit_camera(const Camera& camera, double degrees);
+
 // "ex,ey,ez,tx,ty,tz[,fov]". Throws std::invalid_argument naming the problem: wrong count,
 // non-numbers, non-finite values, eye == target, fov outside (1, 170) degrees.
 Camera parse_camera(const std::string& text, const glm::vec3& scene_lo, const glm::vec3& scene_hi);

@@ -37,6 +37,11 @@ Scene load_scene_within(const std::string& spec, double seconds) {
   return result.get();
 }
 
+std::string scene_short_name(const std::string& spec) {
+  const std::string name = spec.substr(spec.find_last_of("/:") + 1);
+  return name.substr(0, name.find('.'));
+}
+
 Camera choose_camera(const Scene& scene, const std::optional<Camera>& requested) {
   if (requested) return *requested;
   if (scene.camera) return *scene.camera;

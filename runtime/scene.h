@@ -64,6 +64,10 @@ Scene load_scene_within(const std::string& spec, double seconds);
 Scene builtin_scene(const std::string& name);
 Scene load_model(const std::string& path);
 
+// A short name for reports and file names: "builtin:default" -> "default",
+// "/a/b/Engine.glb" -> "Engine".
+std::string scene_short_name(const std::string& spec);
+
 // The camera to use: explicit, else the scene's own, else one that frames the bounds.
 Camera choose_camera(const Scene& scene, const std::optional<Camera>& requested);
 

@@ -45,13 +45,6 @@ double flicker_psnr(const std::vector<DisplayImage>& frames, const std::vector<D
   return n ? psnr_of_mse(squared / double(n)) : kIdenticalDb;
 }
 
-Camera orbit(const Camera& c, double degrees) {
-  const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(float(degrees)), c.up);
-  Camera out = c;
-  out.eye = c.target + glm::vec3(turn * glm::vec4(c.eye - c.target, 0.0f));
-  return out;
-}
-
 }  // namespace
 
 std::vector<TechniqueOptions> default_techniques() {
@@ -91,7 +84,7 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
     const GpuScene gpu(scene);
     std::vector<Camera> cameras;
     const Camera start = choose_camera(scene, std::nullopt);
-    for (int f = 0; f < o.orbit_frames; ++f) cameras.push_back(orbit(start, f * o.orbit_degrees_per_frame));
+    for (int f = 0; f < o.orbit_frames; ++f) cameras.push_back(orbit_camera(start, f * o.orbit_degrees_per_frame));
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, o.width, o.height);
 
     if (progress) progress(spec + ": 64x SSAA reference", done, total);
@@ -273,11 +266,6 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
 
 namespace {
 
-std::string short_scene(const std::string& scene) {
-  std::string s = scene.substr(scene.find_last_of("/:") + 1);
-  return s.substr(0, s.find('.'));
-}
-
 const TechniqueResult* find(const std::vector<TechniqueResult>& results, const std::string& scene,
                             const std::string& label) {
   for (const TechniqueResult& r : results)
@@ -305,7 +293,7 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
   for (const TechniqueResult& r : results) {
     if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
     std::snprintf(line, sizeof line, "| %s | %s%s | %.2f | %.4f | %.2f | %.2f | %.2f | %.1f | %.2f | %.0f |\n",
-                  short_scene(r.scene).c_str(), r.pareto ? "* " : "", r.label.c_str(), r.psnr_db, r.ssim,
+                  scene_short_name(r.scene).c_str(), r.pareto ? "* " : "", r.label.c_str(), r.psnr_db, r.ssim,
                   r.luma_error_share, r.orbit_psnr_db, r.flicker_psnr_db, r.frame_ms, r.frame_ratio,
                   r.bytes_per_pixel);
     s << line;
@@ -328,7 +316,7 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
     };
     char best_text[128] = "-";
     if (best) std::snprintf(best_text, sizeof best_text, "%s: %.2f (%.1fx)", best->label.c_str(), best->psnr_db, best->frame_ratio);
-    s << "| " << short_scene(scene) << " | " << psnr("noaa") << " | " << psnr("fxaa") << " | " << psnr("msaa 4x")
+    s << "| " << scene_short_name(scene) << " | " << psnr("noaa") << " | " << psnr("fxaa") << " | " << psnr("msaa 4x")
       << " | " << best_text << " | "
       << signed_db(find(results, scene, "rsaa 8x sadp auth0"), find(results, scene, "rsaa 4x gl4x sadp auth0")) << " | "
       << signed_db(find(results, scene, "rsaa 8x sadp auth0"), find(results, scene, "rsaa 8x depth auth0")) << " | "

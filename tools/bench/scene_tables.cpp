@@ -37,13 +37,6 @@ View3 render_view(const GpuScene& gpu, const Camera& camera, int width, int heig
   return v;
 }
 
-Camera orbit(const Camera& c, double degrees) {
-  const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(float(degrees)), c.up);
-  Camera out = c;
-  out.eye = c.target + glm::vec3(turn * glm::vec4(c.eye - c.target, 0.0f));
-  return out;
-}
-
 float channel(const Rgb& c, int k) { return k == 0 ? c.r : k == 1 ? c.g : c.b; }
 
 double psnr(const Image& a, const Image& reference) {
@@ -72,7 +65,7 @@ SceneTableReport train_scene_table(const SceneTableOptions& o, const OffsetTable
   const Mask all = generic.pattern.all_similar();
   for (int v = 0; v < o.training_views; ++v) {
     say("training view " + std::to_string(v + 1) + "/" + std::to_string(o.training_views));
-    const View3 view = render_view(gpu, orbit(start, v * o.degrees_between_views), o.width, o.height);
+    const View3 view = render_view(gpu, orbit_camera(start, v * o.degrees_between_views), o.width, o.height);
     for (int y = 0; y < o.height; ++y)
       for (int x = 0; x < o.width; ++x) {
         const Mask m = view.masks[std::size_t(y) * o.width + x];
@@ -115,7 +108,7 @@ SceneTableReport train_scene_table(const SceneTableOptions& o, const OffsetTable
   for (int v = 0; v < o.held_out_views; ++v) {
     say("held-out view " + std::to_string(v + 1) + "/" + std::to_string(o.held_out_views));
     const double degrees = (v + 0.5) * o.degrees_between_views * std::max(1, o.training_views - 1) / o.held_out_views;
-    const View3 view = render_view(gpu, orbit(start, degrees), o.width, o.height);
+    const View3 view = render_view(gpu, orbit_camera(start, degrees), o.width, o.height);
     report.held_out_psnr_noaa += psnr(view.noaa, view.reference) / o.held_out_views;
     report.held_out_psnr_generic += psnr(apply_offset_table(view.noaa, view.masks, generic), view.reference) / o.held_out_views;
     report.held_out_psnr_scene +=

@@ -7,6 +7,7 @@
 
 #include "core/atomic_file.h"
 #include "runtime/gl_context.h"
+#include "runtime/scene.h"
 #include "tools/bench/bench.h"
 #include "tools/cli/commands.h"
 
@@ -30,11 +31,6 @@ std::vector<std::string> split(const std::string& list) {
   while (std::getline(in, item, ','))
     if (!item.empty()) out.push_back(item);
   return out;
-}
-
-std::string file_stem(const std::string& scene) {
-  std::string s = scene.substr(scene.find_last_of("/:") + 1);
-  return s.substr(0, s.find('.'));
 }
 
 int run_bench_command(BenchArgs a) {
@@ -66,8 +62,8 @@ int run_bench_command(BenchArgs a) {
   for (const auto& r : results)
     if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
   for (const std::string& scene : scenes) {
-    bench::plot_pareto(results, scene, a.out_dir + "/pareto-" + file_stem(scene) + ".png");
-    bench::plot_pass_times(results, scene, a.out_dir + "/passes-" + file_stem(scene) + ".png");
+    bench::plot_pareto(results, scene, a.out_dir + "/pareto-" + scene_short_name(scene) + ".png");
+    bench::plot_pass_times(results, scene, a.out_dir + "/passes-" + scene_short_name(scene) + ".png");
   }
   const std::string report = bench::results_markdown(o, results);
   write_file_atomically(a.out_dir + "/report.md", report);
@@ -76,7 +72,7 @@ int run_bench_command(BenchArgs a) {
     std::printf("\ncheapest technique reaching %.1f dB:\n", a.target_psnr);
     for (const std::string& scene : scenes) {
       const auto* best = bench::cheapest_reaching(results, scene, a.target_psnr);
-      std::printf("  %-20s %s\n", file_stem(scene).c_str(),
+      std::printf("  %-20s %s\n", scene_short_name(scene).c_str(),
                   best ? (best->label + " (" + std::to_string(best->frame_ratio).substr(0, 4) + "x noaa)").c_str()
                        : "none of the techniques");
     }

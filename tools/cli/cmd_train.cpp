@@ -11,6 +11,7 @@
 #include "core/parallel.h"
 #include "runtime/gl_context.h"
 #include "runtime/rsaa_pass.h"
+#include "runtime/scene.h"
 #include "tools/bench/scene_tables.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/progress.h"
@@ -76,8 +77,7 @@ int run_train_from_scene(const TrainArgs& a) {
   const auto report = bench::train_scene_table(o, generic, [&](const std::string& s) {
     if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());
   });
-  std::string stem = a.from_scene.substr(a.from_scene.find_last_of("/:") + 1);
-  stem = "d3d8x-" + stem.substr(0, stem.find('.'));
+  const std::string stem = "d3d8x-" + scene_short_name(a.from_scene);
   const auto paths = write_offset_table_files(report.table, a.out_dir, stem);
   std::printf("rsaa train --from-scene %s: %dx%d, %d training views, %llu edge pixels, %zu masks occur, "
               "%d fitted (>= %d pixels), the rest from %s\n",
