@@ -43,6 +43,8 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   o.techniques = {technique_options("noaa"), technique_options("fxaa"), technique_options("msaa", 4),
                   technique_options("msaa", 8), technique_options("ssaa", 16), technique_options("rsaa", 8)};
   o.width = 48, o.height = 36, o.frames = 2, o.orbit_frames = 2;
+  test::TempDir crops;
+  o.crops_dir = crops.path();
   const auto results = bench::run_bench(o, nullptr);
   ASSERT_EQ(results.size(), 6u);
   EXPECT_DOUBLE_EQ(results[0].frame_ratio, 1.0);
@@ -54,6 +56,7 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
     EXPECT_FALSE(r.pass_medians.empty()) << r.label;
   }
   EXPECT_GT(results[4].psnr_db, results[0].psnr_db);  // ssaa 16x beats no AA
+  EXPECT_GT(std::filesystem::file_size(crops.file("crops-edges.png")), 1000u);
 
   const auto json = nlohmann::json::parse(bench::results_json(o, results));
   EXPECT_EQ(json.at("format"), "rsaa-bench");
@@ -85,6 +88,23 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   bench::plot_pass_times(results, results[0].scene, dir.file("passes.png"));
   EXPECT_GT(std::filesystem::file_size(dir.file("pareto.png")), 1000u);
   EXPECT_GT(std::filesystem::file_size(dir.file("passes.png")), 1000u);
+}
+
+TEST(Bench, CropsShowTheRegionWhereTheFirstImageIsWrong) {
+  DisplayImage reference{64, 48, std::vector<std::uint8_t>(64 * 48 * 3, 128)};
+  DisplayImage wrong = reference;
+  for (int y = 30; y < 34; ++y)
+    for (int x = 40; x < 44; ++x) wrong.rgb[(y * 64 + x) * 3] = 255, wrong.rgb[(y * 64 + x) * 3 + 1] = 0;
+  test::TempDir dir;
+  bench::plot_crops({{"wrong", wrong}, {"right", reference}}, reference, dir.file("crops.png"));
+  const DisplayImage canvas = read_display_image(dir.file("crops.png"));
+  int red = 0;
+  for (std::size_t i = 0; i < canvas.rgb.size(); i += 3) red += canvas.rgb[i] == 255 && canvas.rgb[i + 1] == 0;
+  // The 4x4 square appears once, magnified 360 / 16 = 22 times in each direction.
+  EXPECT_EQ(red, 4 * 4 * 22 * 22);
+  EXPECT_THROW(bench::plot_crops({{"small", DisplayImage{8, 8, std::vector<std::uint8_t>(192)}}}, reference,
+                                 dir.file("bad.png")),
+               std::invalid_argument);
 }
 
 TEST(Bench, RejectsBadOptions) {

@@ -100,6 +100,7 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
     ++done;
 
     double noaa_ms = 0.0;
+    std::vector<std::pair<std::string, DisplayImage>> crop_images;
     for (const TechniqueOptions& options : o.techniques) {
       TechniqueResult r;
       r.scene = scene.name;
@@ -136,6 +137,8 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
       r.psnr_db = capped(c.psnr_db);
       r.ssim = c.ssim;
       r.luma_error_share = c.luma_error_share;
+      const auto& shown = crop_labels();
+      if (std::find(shown.begin(), shown.end(), r.label) != shown.end()) crop_images.push_back({r.label, frames[0]});
       double psnr_sum = r.psnr_db;
       for (std::size_t f = 1; f < cameras.size(); ++f) {
         t->render(gpu, make_view(cameras[f], o.width, o.height), output.get());
@@ -148,6 +151,8 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
       results.push_back(r);
       ++done;
     }
+    if (!o.crops_dir.empty())
+      plot_crops(crop_images, reference[0], o.crops_dir + "/crops-" + scene_short_name(scene.name) + ".png");
   }
   mark_pareto(results);
   if (progress) progress("done", done, total);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image_io.h"
 #include "runtime/pass_timer.h"
 #include "runtime/technique.h"
 
@@ -20,6 +21,8 @@ struct BenchOptions {
   int frames = 5;        // timed frames per technique (after one warm-up frame)
   int orbit_frames = 4;  // frames of the camera animation for the temporal metrics
   double orbit_degrees_per_frame = 0.25;
+  // When set, one side-by-side crop image per scene is written here (crops-<scene>.png).
+  std::string crops_dir;
 };
 
 struct TechniqueResult {
@@ -68,6 +71,13 @@ void plot_pareto(const std::vector<TechniqueResult>& results, const std::string&
                  const std::string& path);
 void plot_pass_times(const std::vector<TechniqueResult>& results, const std::string& scene,
                      const std::string& path);
+
+// The techniques shown side by side in the crop image (labels as technique_label()).
+const std::vector<std::string>& crop_labels();
+// Side-by-side crops (4x nearest-neighbour, labelled) of the same region of every image; the
+// region is the window where images.front() differs most from `reference` (where aliasing is).
+void plot_crops(const std::vector<std::pair<std::string, DisplayImage>>& images,
+                const DisplayImage& reference, const std::string& path);
 
 }  // namespace rsaa::bench
 

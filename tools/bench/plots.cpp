@@ -236,3 +236,60 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
 }
 
 }  // namespace rsaa::bench
+
+namespace rsaa::bench {
+
+const std::vector<std::string>& crop_labels() {
+  static const std::vector<std::string> labels = {
+      "noaa", "fxaa", "msaa 4x", "ssaa-filtered k2", "dyncov", "dcaa", "agaa", "rsaa 4x gl4x sadp auth0",
+      "rsaa 8x sadp auth0", "rsaa 8x sadp auth2"};
+  return labels;
+}
+
+void plot_crops(const std::vector<std::pair<std::string, DisplayImage>>& images, const DisplayImage& reference,
+                const std::string& path) {
+  if (images.empty()) return;
+  const int w = reference.width, h = reference.height;
+  for (const auto& [label, image] : images)
+    if (image.width != w || image.height != h) throw std::invalid_argument("plot_crops: '" + label + "' has another size");
+  // The crop window: a quarter of each side, where the first image's error is largest (a
+  // summed-area table makes every window O(1)).
+  const int cw = std::max(8, w / 4), ch = std::max(8, h / 4);
+  std::vector<double> integral(std::size_t(w + 1) * (h + 1), 0.0);
+  const DisplayImage& first = images.front().second;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      double e = 0.0;
+      for (int c = 0; c < 3; ++c) e += std::abs(int(first.rgb[(y * w + x) * 3 + c]) - int(reference.rgb[(y * w + x) * 3 + c]));
+      integral[(y + 1) * (w + 1) + x + 1] = e + integral[y * (w + 1) + x + 1] + integral[(y + 1) * (w + 1) + x] -
+                                            integral[y * (w + 1) + x];
+    }
+  int best_x = 0, best_y = 0;
+  double best = -1.0;
+  for (int y = 0; y + ch <= h; y += 2)
+    for (int x = 0; x + cw <= w; x += 2) {
+      const double e = integral[(y + ch) * (w + 1) + x + cw] - integral[y * (w + 1) + x + cw] -
+                       integral[(y + ch) * (w + 1) + x] + integral[y * (w + 1) + x];
+      if (e > best) best = e, best_x = x, best_y = y;
+    }
+  const int scale = std::max(1, 360 / std::max(cw, ch)), pad = 8, caption = 22;
+  const int tile_w = std::min(cw, w) * scale, tile_h = std::min(ch, h) * scale;
+  std::vector<std::pair<std::string, const DisplayImage*>> tiles;
+  for (const auto& [label, image] : images) tiles.push_back({label, &image});
+  tiles.push_back({"64x SSAA (reference)", &reference});
+  const int columns = std::min<int>(4, int(tiles.size())), rows = (int(tiles.size()) + columns - 1) / columns;
+  cv::Mat canvas(rows * (tile_h + caption + pad) + pad, columns * (tile_w + pad) + pad, CV_8UC3, cv::Scalar(255, 255, 255));
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    const int x0 = pad + int(i % columns) * (tile_w + pad), y0 = pad + int(i / columns) * (tile_h + caption + pad);
+    text(canvas, tiles[i].first, {x0, y0 + 15});
+    const DisplayImage& image = *tiles[i].second;
+    for (int y = 0; y < tile_h; ++y)
+      for (int x = 0; x < tile_w; ++x) {
+        const std::uint8_t* p = &image.rgb[((best_y + y / scale) * w + best_x + x / scale) * 3];
+        canvas.at<cv::Vec3b>(y0 + caption + y, x0 + x) = {p[2], p[1], p[0]};
+      }
+  }
+  save(canvas, path);
+}
+
+}  // namespace rsaa::bench

@@ -52,6 +52,7 @@ int run_bench_command(BenchArgs a) {
     results = bench::read_results_json(a.from_json, o);
   } else {
     gl::HeadlessContext context;
+    o.crops_dir = a.out_dir;
     results = bench::run_bench(o, [](const std::string& what, int done, int total) {
       std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
     });
@@ -77,7 +78,8 @@ int run_bench_command(BenchArgs a) {
                        : "none of the techniques");
     }
   }
-  std::fprintf(stderr, "wrote %s/bench.json, bench.csv, report.md, pareto-*.png, passes-*.png\n", a.out_dir.c_str());
+  std::fprintf(stderr, "wrote %s/bench.json, bench.csv, report.md, pareto-*.png, passes-*.png%s\n", a.out_dir.c_str(),
+               a.from_json.empty() ? ", crops-*.png" : "");
   return 0;
 }
 

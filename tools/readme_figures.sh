@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Reproduces every number, table and picture of the README in one go: trainer speed and trades,
+# table accuracy, the per-scene comparison tables, the bench (tables, Pareto and pass plots,
+# crops), the scene-specific tables and the reliability report. Logs go to OUT_DIR/*.md; the
+# pictures the README shows are copied to docs/images/.
+# Usage: tools/readme_figures.sh [--quick] [OUT_DIR]
+#   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
+#            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+quick=0
+if [[ ${1:-} == --quick ]]; then quick=1; shift; fi
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then sed -n 2,8p "$0" | sed 's/^# \{0,1\}//'; exit 0; fi
+out=${1:-out/figures$([[ $quick == 1 ]] && echo -quick)}
+mkdir -p "$out"
+rsaa=./build/rsaa
+[[ -x $rsaa ]] || bash tools/build.sh
+engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
+truck=/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf
+step() { echo "== $1 -> $out/$2" >&2; }
+started=$SECONDS
+
+if [[ $quick == 1 ]]; then
+  step "table accuracy (10^4 cases)" eval-table.md
+  for t in d3d4x d3d8x; do $rsaa eval-table tables/$t.json --cases 10000 --seed 2; done >"$out/eval-table.md"
+  step "fit trade (10^4 cases)" fit-trade.md
+  bash tools/fit_trade.sh d3d8x 10000 >"$out/fit-trade.md"
+  step "training time (10^5 cases, 1 run)" train-speed.md
+  bash tools/bench_train.sh d3d8x 100000 1 >"$out/train-speed.md"
+  step "compare variants, default scene at 160x120" compare-default.md
+  bash tools/compare_variants.sh builtin:default 160 120 "$out/compare/default" >"$out/compare-default.md"
+  step "bench --quick" bench/report.md
+  $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
+  echo "quick figures done in $((SECONDS - started)) s; docs/ untouched" >&2
+  exit 0
+fi
+
+step "training time" train-speed.md
+{ bash tools/bench_train.sh; bash tools/bench_train.sh d3d16x 1000000 1; bash tools/bench_train.sh d3d8x 10000000 1; } \
+  >"$out/train-speed.md"
+step "fit trade" fit-trade.md
+bash tools/fit_trade.sh >"$out/fit-trade.md"
+step "trainer trades" trainer-trades.md
+bash tools/trainer_trades.sh builtin:default "$out/trainer-trades" >"$out/trainer-trades.md"
+cp "$out/trainer-trades/cases.png" docs/images/trades_cases.png
+cp "$out/trainer-trades/threshold.png" docs/images/trades_threshold.png
+step "table accuracy" eval-table.md
+$rsaa eval-table tables/d3d8x.json >"$out/eval-table.md"
+for scene in builtin:default "$engine" "$truck"; do
+  name=$(basename "${scene#builtin:}"); name=${name%.*}
+  step "compare variants, $name" "compare-$name.md"
+  bash tools/compare_variants.sh "$scene" 640 480 "$out/compare/$name" >"$out/compare-$name.md"
+done
+cp "$out/compare/default/rsaax8sadpauth0.png" docs/images/default_rsaa.png
+bash tools/crops.sh "$out/compare/default" 100x75+250+40 docs/images/default_crops_star.png
+step "bench" bench.md
+$rsaa bench --target-psnr 38 --out-dir "$out/bench" >"$out/bench.md"
+cp "$out/bench/pareto-default.png" docs/images/bench_pareto_default.png
+cp "$out/bench/passes-default.png" docs/images/bench_passes_default.png
+cp "$out/bench/pareto-2CylinderEngine.png" docs/images/bench_pareto_engine.png
+cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
+cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
+for scene in builtin:default "$engine"; do
+  name=$(basename "${scene#builtin:}"); name=${name%.*}
+  step "scene-specific table, $name" "scene-table-$name.md"
+  $rsaa train --from-scene "$scene" --out-dir "$out/scene-tables" >"$out/scene-table-$name.md" 2>&1
+done
+step "reliability report" docs/reliability.md
+bash tools/reliability.sh
+echo "all README figures done in $((SECONDS - started)) s" >&2
