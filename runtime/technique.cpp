@@ -33,7 +33,7 @@ std::vector<TechniqueOptions> rsaa_variants() {
 }
 
 const std::vector<std::string>& technique_names() {
-  static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa"};
+  static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa", "dcaa", "dyncov"};
   return names;
 }
 
@@ -41,6 +41,10 @@ void validate(const TechniqueOptions& o) {
   const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
   if (o.technique == "noaa" || o.technique == "fxaa") {
     if (o.samples > 1) bad(o.technique + " takes no --samples");
+  } else if (o.technique == "dcaa") {
+    if (o.samples != 0 && o.samples != 64) bad("dcaa always uses 64 coverage samples");
+  } else if (o.technique == "dyncov") {
+    if (o.samples != 0 && o.samples != 16) bad("dyncov always uses 16 coverage samples");
   } else if (o.technique == "msaa") {
     const int n = samples_or(o, 4);
     if (n != 4 && n != 8) bad("msaa --samples must be 4 or 8, not " + std::to_string(n));
@@ -73,7 +77,8 @@ void validate(const TechniqueOptions& o) {
 }
 
 std::string technique_label(const TechniqueOptions& o) {
-  if (o.technique == "noaa" || o.technique == "fxaa") return o.technique;
+  if (o.technique == "noaa" || o.technique == "fxaa" || o.technique == "dcaa" || o.technique == "dyncov")
+    return o.technique;
   if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
   if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
   if (o.technique == "ssaa-filtered") return "ssaa-filtered k" + std::to_string(o.kernel);
@@ -87,6 +92,8 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
   validate(o);
   if (o.technique == "noaa") return make_noaa(width, height);
   if (o.technique == "fxaa") return make_fxaa(width, height);
+  if (o.technique == "dcaa") return make_dcaa(width, height);
+  if (o.technique == "dyncov") return make_dynamic_coverage(width, height);
   if (o.technique == "ssaa-filtered") return make_filtered_ssaa(o.kernel, width, height);
   if (o.technique == "msaa") {
     if (samples_or(o, 4) == 4) return make_hardware_msaa(4, width, height);

@@ -43,6 +43,9 @@ class Technique {
   virtual void render(const GpuScene& scene, const View& view, GLuint output) = 0;
   // Bytes per pixel of every buffer the technique keeps for a frame.
   virtual double bytes_per_pixel() const = 0;
+  // The per-pixel fragment lists of a coverage technique (dcaa, dyncov), else nullptr: for tests
+  // that compare the GL resolve with the CPU reference on the same fragments.
+  virtual class CoverageFragmentLists* coverage_lists() { return nullptr; }
   // GL times of the passes of the last frame.
   std::vector<PassTime> take_pass_times() { return timer_.collect(); }
 

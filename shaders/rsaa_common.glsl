@@ -107,4 +107,40 @@ uint rsaa_classify(float similarity[RSAA_SAMPLE_COUNT], float threshold, out flo
 }
 #endif  // RSAA_SAMPLE_COUNT
 
+// ---- coverage masks of triangles from the half-plane LUT (DCAA, dynamic coverage). The table
+// is built by core/halfplane_lut.cpp, which documents the parametrisation: an edge is n.p = d
+// with n the unit normal towards the covered side, p in pixel space (centre (0, 0), y down).
+// The LUT texture is RG32UI: x = distance bin, y = angle bin; .x bits 0-31, .y bits 32-63.
+const float RSAA_TWO_PI = 6.283185307179586;
+const float RSAA_PIXEL_RADIUS = 0.7071067811865476;
+
+uvec2 rsaa_half_plane_mask(usampler2D lut, vec2 n, float d) {
+  if (isnan(d) || any(isnan(n))) return uvec2(0u);
+  if (d <= -RSAA_PIXEL_RADIUS) return uvec2(0xffffffffu);
+  if (d >= RSAA_PIXEL_RADIUS) return uvec2(0u);
+  ivec2 bins = textureSize(lut, 0);
+  float turns = atan(n.y, n.x) / RSAA_TWO_PI;
+  turns -= floor(turns);
+  int a = int(floor(turns * float(bins.y) + 0.5)) % bins.y;
+  int k = min(bins.x - 1, int((d + RSAA_PIXEL_RADIUS) / (2.0 * RSAA_PIXEL_RADIUS) * float(bins.x)));
+  return texelFetch(lut, ivec2(k, a), 0).xy;
+}
+
+// Samples inside the triangle a, b, c (pixel space relative to the pixel centre): the AND of its
+// edges' inner half-planes; 0 for a degenerate triangle.
+uvec2 rsaa_triangle_coverage(usampler2D lut, vec2 a, vec2 b, vec2 c) {
+  vec2 ab = b - a, ac = c - a;
+  float area2 = ab.x * ac.y - ab.y * ac.x;
+  if (!(area2 != 0.0)) return uvec2(0u);
+  float o = area2 > 0.0 ? 1.0 : -1.0;
+  vec2 p[3] = vec2[3](a, b, c);
+  uvec2 mask = uvec2(0xffffffffu);
+  for (int i = 0; i < 3; ++i) {
+    vec2 e = p[(i + 1) % 3] - p[i];
+    vec2 n = o * vec2(-e.y, e.x) / length(e);
+    mask &= rsaa_half_plane_mask(lut, n, dot(n, p[i]));
+  }
+  return mask;
+}
+
 #endif  // RSAA_COMMON_GLSL

@@ -1,20 +1,7 @@
-// Shading at one sample position: a fixed directional light in view space, albedo (vertex
-// colour times texture), two-sided. Linear light. With RSAA_GBUFFER also writes the compressed
-// geometric normal and the primitive id (+1; 0 = background) for the RSAA pre-pass.
+// Shading at one sample position (scene_shading.glsl). With RSAA_GBUFFER also writes the
+// compressed geometric normal and the primitive id (+1; 0 = background) for the RSAA pre-pass.
 #include "rsaa_common.glsl"
-
-in FragmentData {
-  vec3 view_position;
-  vec3 view_normal;
-  vec2 uv;
-  vec3 albedo;
-  float filter_alpha;
-  flat vec3 face_normal;
-} f_in;
-
-uniform sampler2D u_texture;
-uniform bool u_has_texture;
-uniform uint u_primitive_base;
+#include "scene_shading.glsl"
 
 layout(location = 0) out vec4 o_colour;
 #ifdef RSAA_GBUFFER
@@ -23,19 +10,9 @@ layout(location = 2) out uint o_primitive;
 #endif
 
 void main() {
-  vec3 n = normalize(f_in.view_normal);
-  if (!all(equal(n, n))) n = f_in.face_normal;  // NaN normals from a model: use the face
-  vec3 to_eye = normalize(-f_in.view_position);
-  if (dot(n, to_eye) < 0.0) n = -n;
-  const vec3 light = normalize(vec3(-0.4, 0.7, 0.6));
-  float diffuse = max(dot(n, light), 0.0);
-  float specular = pow(max(dot(reflect(-light, n), to_eye), 0.0), 32.0);
-  vec3 albedo = f_in.albedo;
-  if (u_has_texture) albedo *= texture(u_texture, f_in.uv).rgb;
-  // Alpha carries the object's filter alpha (ssaa-filtered kernel 3); 1 unless a scene says so.
-  o_colour = vec4(albedo * (0.12 + 0.88 * diffuse) + 0.25 * specular, f_in.filter_alpha);
+  o_colour = shade_scene_fragment();
 #ifdef RSAA_GBUFFER
   o_normal = rsaa_encode_normal(f_in.face_normal);
-  o_primitive = u_primitive_base + uint(gl_PrimitiveID) + 1u;
+  o_primitive = scene_primitive_order() + 1u;
 #endif
 }

@@ -16,6 +16,9 @@ std::unique_ptr<Technique> make_noaa(int width, int height);
 std::unique_ptr<Technique> make_fxaa(int width, int height);
 // Draws at 2W x 2H into its own RGBA16F target, then downsamples with kernel 1, 2 or 3.
 std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height);
+// Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
+std::unique_ptr<Technique> make_dcaa(int width, int height);
+std::unique_ptr<Technique> make_dynamic_coverage(int width, int height);
 std::unique_ptr<Technique> make_hardware_msaa(int samples, int width, int height);
 std::unique_ptr<Technique> make_jittered_supersampling(std::vector<Vec2> positions, int width, int height);
 // mask_output: an R32UI texture that receives the masks when settings.output_mask.

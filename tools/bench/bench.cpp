@@ -56,6 +56,8 @@ std::vector<TechniqueOptions> default_techniques() {
     o.kernel = kernel;
     list.push_back(o);
   }
+  list.push_back(technique_options("dyncov", 0));
+  list.push_back(technique_options("dcaa", 0));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
   return list;
 }

@@ -21,6 +21,8 @@ cv::Scalar family_colour(const TechniqueResult& r) {
   if (r.options.technique == "msaa") return {200, 110, 30};
   if (r.options.technique == "ssaa") return {40, 150, 40};
   if (r.options.technique == "ssaa-filtered") return {120, 160, 20};
+  if (r.options.technique == "dcaa") return {20, 180, 200};
+  if (r.options.technique == "dyncov") return {140, 140, 0};
   return r.options.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);
 }
 

@@ -1,0 +1,187 @@
+#include "runtime/coverage_lists.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "runtime/gl_context.h"
+#include "runtime/scene_renderer.h"
+#include "runtime/shader_library.h"
+
+namespace rsaa {
+namespace {
+
+constexpr std::uint32_t kListEnd = 0xffffffffu;
+constexpr std::size_t kRecordUints = CoverageFragmentLists::kRecordBytes / 4;
+
+gl::Texture make_lut_texture(const HalfPlaneLut& lut) {
+  std::vector<std::uint32_t> texels;
+  texels.reserve(lut.entries().size() * 2);
+  for (Mask m : lut.entries()) texels.insert(texels.end(), {std::uint32_t(m), std::uint32_t(m >> 32)});
+  gl::Texture t = gl::make_texture_2d(GL_RG32UI, lut.distance_bins(), lut.angle_bins());
+  glTextureSubImage2D(t.get(), 0, 0, 0, lut.distance_bins(), lut.angle_bins(), GL_RG_INTEGER, GL_UNSIGNED_INT,
+                      texels.data());
+  return t;
+}
+
+// The inverse of coverage_record.glsl's encode_unit_vector (octahedral, 2 x snorm16).
+Normal3 decode_unit_vector(std::uint32_t packed) {
+  const auto snorm = [](std::uint32_t v) { return std::clamp(float(std::int16_t(v & 0xffff)) / 32767.0f, -1.0f, 1.0f); };
+  float x = snorm(packed), y = snorm(packed >> 16), z = 1.0f - std::abs(x) - std::abs(y);
+  if (z < 0.0f) {
+    const float ox = (1.0f - std::abs(y)) * (x >= 0.0f ? 1.0f : -1.0f);
+    const float oy = (1.0f - std::abs(x)) * (y >= 0.0f ? 1.0f : -1.0f);
+    x = ox, y = oy;
+  }
+  const float len = std::sqrt(x * x + y * y + z * z);
+  return {x / len, y / len, z / len};
+}
+
+float half_to_float(std::uint16_t h) {
+  const std::uint32_t sign = std::uint32_t(h & 0x8000) << 16, exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
+  std::uint32_t bits;
+  if (exponent == 0) {
+    if (mantissa == 0) {
+      bits = sign;
+    } else {  // subnormal: normalise
+      int e = -1;
+      std::uint32_t m = mantissa;
+      do ++e, m <<= 1; while (!(m & 0x400));
+      bits = sign | std::uint32_t(127 - 15 - e) << 23 | (m & 0x3ff) << 13;
+    }
+  } else if (exponent == 31) {
+    bits = sign | 0x7f800000u | mantissa << 13;
+  } else {
+    bits = sign | (exponent + 127 - 15) << 23 | mantissa << 13;
+  }
+  float f;
+  std::memcpy(&f, &bits, 4);
+  return f;
+}
+
+float bits_to_float(std::uint32_t u) {
+  float f;
+  std::memcpy(&f, &u, 4);
+  return f;
+}
+
+}  // namespace
+
+CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height)
+    : width_(width),
+      height_(height),
+      lut_(coverage_pattern),
+      program_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
+                                 {GL_GEOMETRY_SHADER, gl::shader_source("coverage_fragments.geom")},
+                                 {GL_FRAGMENT_SHADER, gl::shader_source("coverage_fragments.frag")}},
+                                "", "coverage fragment lists")),
+      lut_texture_(make_lut_texture(lut_)),
+      heads_(gl::make_texture_2d(GL_R32UI, width, height)) {
+  GLuint id;
+  glCreateBuffers(1, &id);
+  counter_ = gl::Buffer(id);
+  glNamedBufferStorage(id, 8, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glCreateFramebuffers(1, &id);
+  empty_target_ = gl::Framebuffer(id);
+  glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
+  glNamedFramebufferParameteri(id, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+  const GLuint p = program_.get();
+  const Mask full = coverage_pattern.all_similar();
+  glProgramUniform2ui(p, glGetUniformLocation(p, "u_full_mask"), GLuint(full), GLuint(full >> 32));
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_halfplane_lut"), 1);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_heads"), 0);
+  glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(width), float(height));
+  allocate_records(std::size_t(width) * height * 4);
+  gl::check("coverage fragment lists");
+}
+
+void CoverageFragmentLists::allocate_records(std::size_t capacity) {
+  GLuint id;
+  glCreateBuffers(1, &id);
+  records_ = gl::Buffer(id);
+  glNamedBufferStorage(id, GLsizeiptr(capacity * kRecordBytes), nullptr, 0);
+  capacity_ = capacity;
+}
+
+std::size_t CoverageFragmentLists::build(const GpuScene& scene, const View& view) {
+  for (int attempt = 0;; ++attempt) {
+    const std::uint32_t end = kListEnd;
+    glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end);
+    const std::uint32_t counter[2] = {0u, std::uint32_t(std::min<std::size_t>(capacity_, kListEnd - 1))};
+    glNamedBufferSubData(counter_.get(), 0, sizeof counter, counter);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, records_.get());
+    glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindTextureUnit(1, lut_texture_.get());
+    glBindFramebuffer(GL_FRAMEBUFFER, empty_target_.get());
+    glProgramUniform2f(program_.get(), glGetUniformLocation(program_.get(), "u_viewport"), float(view.width),
+                       float(view.height));
+    SceneRenderer::draw(scene, view, {0.0f, 0.0f}, program_.get());
+    glDisable(GL_DEPTH_TEST);  // (draw() enables it; the lists must see every fragment)
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t used = 0;
+    glGetNamedBufferSubData(counter_.get(), 0, 4, &used);
+    fragments_ = used;
+    if (used <= capacity_ || attempt == 2) break;
+    allocate_records(std::size_t(used) + used / 4);
+  }
+  gl::check("coverage fragment lists: geometry pass");
+  return std::min(fragments_, capacity_);
+}
+
+void CoverageFragmentLists::bind_for_resolve(GLuint program) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter_.get());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, records_.get());
+  glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  glProgramUniform1i(program, glGetUniformLocation(program, "u_heads"), 0);
+}
+
+double CoverageFragmentLists::bytes_per_pixel() const {
+  return 4.0 + double(capacity_) * kRecordBytes / (double(width_) * height_);
+}
+
+std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() const {
+  std::vector<std::uint32_t> heads(std::size_t(width_) * height_);
+  glGetTextureImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(heads.size() * 4), heads.data());
+  const std::size_t stored = std::min(fragments_, capacity_);
+  std::vector<std::uint32_t> records(stored * kRecordUints);
+  if (stored) glGetNamedBufferSubData(records_.get(), 0, GLsizeiptr(records.size() * 4), records.data());
+  std::vector<std::vector<CoverageFragment>> pixels(heads.size());
+  for (int y = 0; y < height_; ++y)
+    for (int x = 0; x < width_; ++x) {
+      // GL rows are bottom first; ours top first.
+      auto& list = pixels[std::size_t(height_ - 1 - y) * width_ + x];
+      for (std::uint32_t i = heads[std::size_t(y) * width_ + x]; i != kListEnd && i < stored;
+           i = records[i * kRecordUints]) {
+        const std::uint32_t* r = &records[i * kRecordUints];
+        CoverageFragment f;
+        f.order = r[1];
+        f.coverage = Mask(r[2]) | Mask(r[3]) << 32;
+        f.depth = {bits_to_float(r[4]), bits_to_float(r[5]), bits_to_float(r[6])};
+        f.normal = decode_unit_vector(r[7]);
+        f.colour = {half_to_float(std::uint16_t(r[8])), half_to_float(std::uint16_t(r[8] >> 16)),
+                    half_to_float(std::uint16_t(r[9]))};
+        list.push_back(f);
+      }
+      std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
+    }
+  gl::check("coverage fragment lists: read back");
+  return pixels;
+}
+
+void resolve_coverage_lists(const CoverageFragmentLists& lists, GLuint program, const GpuScene& scene,
+                            const View& view, GLuint framebuffer) {
+  lists.bind_for_resolve(program);
+  const glm::vec3 bg = scene.background();
+  glProgramUniform3f(program, glGetUniformLocation(program, "u_background"), bg.r, bg.g, bg.b);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, view.width, view.height);
+  glUseProgram(program);
+  draw_fullscreen_triangle();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl::check("coverage lists: resolve");
+}
+
+}  // namespace rsaa

@@ -1,0 +1,61 @@
+// The per-pixel fragment lists shared by the coverage-based techniques (DCAA, dynamic coverage).
+// The papers merge fragments in a critical section ordered by fragment-shader interlock; llvmpipe
+// has none, so a geometry pass appends every fragment (shaded once, with its coverage mask from
+// the half-plane LUT, its depth plane and facet normal) to a linked list per pixel with atomics,
+// and the technique's resolve pass replays each list sorted by primitive order. Same result as
+// the interlocked design; the cost is memory proportional to the fragment count (40 B per
+// fragment + 4 B per pixel, instead of the technique's fixed per-pixel state), and no early
+// merge: every fragment is stored, then sorted.
+#pragma once
+
+#include <vector>
+
+#include "core/coverage_fragment.h"
+#include "core/halfplane_lut.h"
+#include "runtime/gl_objects.h"
+#include "runtime/gpu_scene.h"
+
+namespace rsaa {
+
+class CoverageFragmentLists {
+ public:
+  static constexpr int kRecordBytes = 40;
+
+  // `coverage_pattern`: the coverage samples of the technique (64 for DCAA, 16 for dynamic
+  // coverage), whose half-plane LUT the geometry pass uses.
+  CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height);
+
+  // Draws the scene into the lists; grows the record buffer and draws again when it overflowed.
+  // Returns the number of fragments stored.
+  std::size_t build(const GpuScene& scene, const View& view);
+
+  // Binds the head image (unit 0, read-only) and the record buffers for a resolve program.
+  void bind_for_resolve(GLuint program) const;
+
+  // Every pixel's fragments, in primitive order (row-major, row 0 = top): for the tests' CPU
+  // oracle.
+  std::vector<std::vector<CoverageFragment>> read_back() const;
+
+  const HalfPlaneLut& lut() const { return lut_; }
+  // Bytes per pixel of the buffers as allocated (heads + record capacity).
+  double bytes_per_pixel() const;
+  std::size_t fragments() const { return fragments_; }
+
+ private:
+  void allocate_records(std::size_t capacity);
+
+  int width_, height_;
+  HalfPlaneLut lut_;
+  gl::Program program_;
+  gl::Texture lut_texture_, heads_;
+  gl::Buffer counter_, records_;
+  gl::Framebuffer empty_target_;
+  std::size_t capacity_ = 0, fragments_ = 0;
+};
+
+// The resolve pass of a coverage technique: draws `program` (coverage_resolve.frag) fullscreen
+// into `framebuffer` with the lists bound and the scene's background as the clear colour.
+void resolve_coverage_lists(const CoverageFragmentLists& lists, GLuint program, const GpuScene& scene,
+                            const View& view, GLuint framebuffer);
+
+}  // namespace rsaa

@@ -1,0 +1,59 @@
+// One fragment of the per-pixel lists of the coverage-based techniques (DCAA, dynamic coverage):
+// 10 uints (40 bytes) in a shader storage buffer, linked from an R32UI head image (0xffffffff
+// ends a list). The C++ side (runtime/coverage_lists.cpp) reads the same layout back.
+#ifndef RSAA_COVERAGE_RECORD_GLSL
+#define RSAA_COVERAGE_RECORD_GLSL
+
+const uint COVERAGE_RECORD_UINTS = 10u;
+const uint COVERAGE_LIST_END = 0xffffffffu;
+
+layout(std430, binding = 0) coherent buffer CoverageCounter {
+  uint coverage_records_used;
+  uint coverage_record_capacity;
+};
+layout(std430, binding = 1) coherent buffer CoverageRecords { uint coverage_records[]; };
+
+struct CoverageRecord {
+  uint next;
+  uint order;      // primitive submission order
+  uvec2 coverage;  // bits 0-31, 32-63
+  vec3 depth;      // window depth at the pixel centre, d/dx, d/dy (pixel space, y down)
+  uint normal;     // octahedral, 2 x snorm16
+  vec3 colour;     // linear, 2 x half2
+};
+
+void coverage_store(uint i, CoverageRecord r) {
+  uint b = i * COVERAGE_RECORD_UINTS;
+  coverage_records[b + 0u] = r.next;
+  coverage_records[b + 1u] = r.order;
+  coverage_records[b + 2u] = r.coverage.x;
+  coverage_records[b + 3u] = r.coverage.y;
+  coverage_records[b + 4u] = floatBitsToUint(r.depth.x);
+  coverage_records[b + 5u] = floatBitsToUint(r.depth.y);
+  coverage_records[b + 6u] = floatBitsToUint(r.depth.z);
+  coverage_records[b + 7u] = r.normal;
+  coverage_records[b + 8u] = packHalf2x16(r.colour.rg);
+  coverage_records[b + 9u] = packHalf2x16(vec2(r.colour.b, 0.0));
+}
+
+CoverageRecord coverage_load(uint i) {
+  uint b = i * COVERAGE_RECORD_UINTS;
+  CoverageRecord r;
+  r.next = coverage_records[b + 0u];
+  r.order = coverage_records[b + 1u];
+  r.coverage = uvec2(coverage_records[b + 2u], coverage_records[b + 3u]);
+  r.depth = vec3(uintBitsToFloat(coverage_records[b + 4u]), uintBitsToFloat(coverage_records[b + 5u]),
+                 uintBitsToFloat(coverage_records[b + 6u]));
+  r.normal = coverage_records[b + 7u];
+  r.colour = vec3(unpackHalf2x16(coverage_records[b + 8u]), unpackHalf2x16(coverage_records[b + 9u]).x);
+  return r;
+}
+
+vec3 decode_unit_vector(uint code) {
+  vec2 e = unpackSnorm2x16(code);
+  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+  if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+  return normalize(n);
+}
+
+#endif  // RSAA_COVERAGE_RECORD_GLSL

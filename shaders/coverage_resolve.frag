@@ -1,0 +1,217 @@
+// Coverage-based techniques, resolve: replays the pixel's fragment list in primitive order
+// (what fragment-shader interlock gives the papers) through the technique's per-pixel update,
+// then resolves. The rules are those of the CPU references, which the tests compare against:
+//   COVERAGE_DCAA    core/dcaa.cpp (Algorithm 1 merge/discard, per-sample depth resolve)
+//   COVERAGE_DYNCOV  core/dynamic_coverage.cpp (two slots, evict the farther)
+#include "coverage_record.glsl"
+
+layout(r32ui) uniform readonly uimage2D u_heads;
+uniform vec3 u_background;  // linear clear colour
+out vec4 o_colour;
+
+const int SORT_SLOTS = 32;  // lists up to this length are sorted locally; longer ones are scanned
+
+#ifdef COVERAGE_DCAA
+uniform float u_cos_normal_threshold;
+uniform int u_coverage_sample_count;
+uniform vec2 u_coverage_samples[64];  // pixel space, y down
+const int MAX_SURFACES = 4;
+
+uvec2 s_coverage[MAX_SURFACES + 1];
+vec3 s_depth[MAX_SURFACES + 1];
+vec3 s_normal[MAX_SURFACES + 1];
+vec3 s_colour[MAX_SURFACES + 1];
+int s_count = 0;
+
+int bits(uvec2 m) { return bitCount(m.x) + bitCount(m.y); }
+float half_range(vec3 d) { return 0.5 * (abs(d.y) + abs(d.z)); }
+bool overlaps(vec3 a, vec3 b) {
+  return a.x - half_range(a) <= b.x + half_range(b) && b.x - half_range(b) <= a.x + half_range(a);
+}
+float overlap_amount(vec3 a, vec3 b) {
+  return min(a.x + half_range(a), b.x + half_range(b)) - max(a.x - half_range(a), b.x - half_range(b));
+}
+
+// merge_surfaces() of core/dcaa.cpp, into slot i from slot j.
+void merge_into(int i, int j) {
+  float wa = float(bits(s_coverage[i])), wb = float(bits(s_coverage[j]));
+  float ka = wa + wb > 0.0 ? wa / (wa + wb) : 0.5, kb = 1.0 - ka;
+  vec3 n = ka * s_normal[i] + kb * s_normal[j];
+  float len = length(n);
+  s_normal[i] = len > 1e-6 ? n / len : (wa >= wb ? s_normal[i] : s_normal[j]);
+  s_coverage[i] |= s_coverage[j];
+  s_depth[i] = ka * s_depth[i] + kb * s_depth[j];
+  s_colour[i] = ka * s_colour[i] + kb * s_colour[j];
+}
+
+void copy_slot(int to, int from) {
+  s_coverage[to] = s_coverage[from];
+  s_depth[to] = s_depth[from];
+  s_normal[to] = s_normal[from];
+  s_colour[to] = s_colour[from];
+}
+
+void insert_fragment(CoverageRecord r) {
+  // The fragment goes into the spare slot MAX_SURFACES (or s_count) first.
+  int in_slot = s_count;
+  s_coverage[in_slot] = r.coverage;
+  s_depth[in_slot] = r.depth;
+  s_normal[in_slot] = decode_unit_vector(r.normal);
+  s_colour[in_slot] = r.colour;
+  int best = -1;
+  float best_dot = 0.0, best_overlap = 0.0;
+  for (int i = 0; i < s_count; ++i) {
+    float d = dot(s_normal[i], s_normal[in_slot]);
+    if (!(d > u_cos_normal_threshold) || !overlaps(s_depth[i], s_depth[in_slot])) continue;
+    float ov = overlap_amount(s_depth[i], s_depth[in_slot]);
+    if (best < 0 || d > best_dot || (d == best_dot && ov > best_overlap)) {
+      best = i;
+      best_dot = d;
+      best_overlap = ov;
+    }
+  }
+  if (best >= 0) {
+    merge_into(best, in_slot);
+    return;
+  }
+  if (s_count < MAX_SURFACES) {
+    ++s_count;
+    return;
+  }
+  // Second merge attempt over the 4 surfaces and the fragment (slot 4): coarse depth resolve.
+  const int n = MAX_SURFACES + 1;
+  // Front to back by depth at the centre, ties in slot order (a stable sort, by rank).
+  int front_to_back[n];
+  for (int i = 0; i < n; ++i) {
+    int rank = 0;
+    for (int j = 0; j < n; ++j)
+      if (s_depth[j].x < s_depth[i].x || (s_depth[j].x == s_depth[i].x && j < i)) ++rank;
+    front_to_back[rank] = i;
+  }
+  uvec2 closer = uvec2(0u);
+  int smallest = -1, smallest_visible = 0;
+  for (int k = 0; k < n; ++k) {
+    int i = front_to_back[k];
+    int visible = bits(s_coverage[i] & ~closer);
+    closer |= s_coverage[i];
+    if (k > 0 && (smallest < 0 || visible <= smallest_visible)) {
+      smallest = i;
+      smallest_visible = visible;
+    }
+  }
+  int target = -1;
+  float target_overlap = 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (i == smallest || !overlaps(s_depth[i], s_depth[smallest])) continue;
+    float ov = overlap_amount(s_depth[i], s_depth[smallest]);
+    if (target < 0 || ov > target_overlap) {
+      target = i;
+      target_overlap = ov;
+    }
+  }
+  if (target >= 0) merge_into(target, smallest);
+  for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
+}
+
+vec3 resolve_pixel() {
+  int counts[MAX_SURFACES] = int[MAX_SURFACES](0, 0, 0, 0);
+  int covered = 0;
+  for (int s = 0; s < u_coverage_sample_count; ++s) {
+    int front = -1;
+    float front_depth = 0.0;
+    vec2 p = u_coverage_samples[s];
+    for (int i = 0; i < s_count; ++i) {
+      bool has = s < 32 ? ((s_coverage[i].x >> uint(s)) & 1u) != 0u : ((s_coverage[i].y >> uint(s - 32)) & 1u) != 0u;
+      if (!has) continue;
+      float z = s_depth[i].x + s_depth[i].y * p.x + s_depth[i].z * p.y;
+      if (front < 0 || z < front_depth) {
+        front = i;
+        front_depth = z;
+      }
+    }
+    if (front >= 0) {
+      ++counts[front];
+      ++covered;
+    }
+  }
+  float n = float(u_coverage_sample_count);
+  vec3 c = vec3(0.0);
+  for (int i = 0; i < s_count; ++i) c += float(counts[i]) / n * s_colour[i];
+  return c + float(u_coverage_sample_count - covered) / n * u_background;
+}
+#endif  // COVERAGE_DCAA
+
+#ifdef COVERAGE_DYNCOV
+vec3 slot_colour[2];
+float slot_depth[2];
+uint slot_mask[2];
+
+void insert_fragment(CoverageRecord r) {
+  uint incoming = r.coverage.x & 0xffffu;
+  float id = r.depth.x;
+  if (incoming == 0u) return;
+  if (!(id < slot_depth[0] || id < slot_depth[1])) return;
+  int slot = slot_depth[0] < slot_depth[1] ? 1 : 0;
+  slot_colour[slot] = r.colour;
+  slot_depth[slot] = id;
+  slot_mask[slot] = incoming;
+}
+
+vec3 resolve_pixel() {
+  int near = slot_depth[0] < slot_depth[1] ? 0 : 1, far = 1 - near;
+  float total = float(bitCount(slot_mask[0] | slot_mask[1]));
+  if (total == 0.0) return slot_colour[near];
+  return (float(bitCount(slot_mask[near])) * slot_colour[near] +
+          float(bitCount(slot_mask[far] & ~slot_mask[near])) * slot_colour[far]) / total;
+}
+#endif  // COVERAGE_DYNCOV
+
+void main() {
+#ifdef COVERAGE_DYNCOV
+  slot_colour[0] = slot_colour[1] = u_background;
+  slot_depth[0] = slot_depth[1] = 1.0;
+  slot_mask[0] = slot_mask[1] = 0xffffu;
+#endif
+  uint head = imageLoad(u_heads, ivec2(gl_FragCoord.xy)).x;
+  uint capacity = coverage_record_capacity;
+  // Gather up to SORT_SLOTS records and sort them by primitive order.
+  uint keys[SORT_SLOTS], indices[SORT_SLOTS];
+  int n = 0;
+  bool longer = false;
+  for (uint i = head; i != COVERAGE_LIST_END && i < capacity; i = coverage_records[i * COVERAGE_RECORD_UINTS]) {
+    if (n == SORT_SLOTS) {
+      longer = true;
+      break;
+    }
+    uint key = coverage_records[i * COVERAGE_RECORD_UINTS + 1u];
+    int k = n++;
+    for (; k > 0 && keys[k - 1] > key; --k) {
+      keys[k] = keys[k - 1];
+      indices[k] = indices[k - 1];
+    }
+    keys[k] = key;
+    indices[k] = i;
+  }
+  if (!longer) {
+    for (int k = 0; k < n; ++k) insert_fragment(coverage_load(indices[k]));
+  } else {
+    // Long list: take the next primitive in order by scanning (O(n^2), rare).
+    bool started = false;
+    uint last = 0u;
+    for (;;) {
+      uint best = COVERAGE_LIST_END, best_key = 0u;
+      for (uint i = head; i != COVERAGE_LIST_END && i < capacity; i = coverage_records[i * COVERAGE_RECORD_UINTS]) {
+        uint key = coverage_records[i * COVERAGE_RECORD_UINTS + 1u];
+        if ((!started || key > last) && (best == COVERAGE_LIST_END || key < best_key)) {
+          best = i;
+          best_key = key;
+        }
+      }
+      if (best == COVERAGE_LIST_END) break;
+      insert_fragment(coverage_load(best));
+      started = true;
+      last = best_key;
+    }
+  }
+  o_colour = vec4(resolve_pixel(), 1.0);
+}
