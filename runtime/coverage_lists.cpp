@@ -171,16 +171,26 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
   return pixels;
 }
 
-void resolve_coverage_lists(const CoverageFragmentLists& lists, GLuint program, const GpuScene& scene,
-                            const View& view, GLuint framebuffer) {
-  lists.bind_for_resolve(program);
+CoverageListTechnique::CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define,
+                                             int width, int height)
+    : lists_(coverage_pattern, width, height),
+      resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")) {}
+
+void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLuint output) {
+  timer_.begin("main");
+  lists_.build(scene, view);
+  timer_.end();
+  timer_.begin("resolve");
+  const GLuint program = resolve_.get();
+  lists_.bind_for_resolve(program);
   const glm::vec3 bg = scene.background();
   glProgramUniform3f(program, glGetUniformLocation(program, "u_background"), bg.r, bg.g, bg.b);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, output_target_.get({{output}}));
   glViewport(0, 0, view.width, view.height);
   glUseProgram(program);
   draw_fullscreen_triangle();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  timer_.end();
   gl::check("coverage lists: resolve");
 }
 

@@ -14,6 +14,7 @@
 #include "core/halfplane_lut.h"
 #include "runtime/gl_objects.h"
 #include "runtime/gpu_scene.h"
+#include "runtime/technique.h"
 
 namespace rsaa {
 
@@ -53,9 +54,22 @@ class CoverageFragmentLists {
   std::size_t capacity_ = 0, fragments_ = 0;
 };
 
-// The resolve pass of a coverage technique: draws `program` (coverage_resolve.frag) fullscreen
-// into `framebuffer` with the lists bound and the scene's background as the clear colour.
-void resolve_coverage_lists(const CoverageFragmentLists& lists, GLuint program, const GpuScene& scene,
-                            const View& view, GLuint framebuffer);
+// A coverage technique: the lists, then `resolve_define`'s variant of coverage_resolve.frag
+// drawn fullscreen with the scene's background as the clear colour. dcaa and dyncov are this
+// with their coverage pattern and per-pixel update.
+class CoverageListTechnique : public Technique {
+ public:
+  CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define, int width,
+                        int height);
+  void render(const GpuScene& scene, const View& view, GLuint output) override;
+  double bytes_per_pixel() const override { return lists_.bytes_per_pixel(); }
+  CoverageFragmentLists* coverage_lists() override { return &lists_; }
+  GLuint resolve_program() const { return resolve_.get(); }
+
+ protected:
+  CoverageFragmentLists lists_;
+  gl::Program resolve_;
+  gl::CachedFramebuffer output_target_;
+};
 
 }  // namespace rsaa

@@ -6,41 +6,17 @@
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
-namespace {
 
-class Dcaa : public Technique {
- public:
-  Dcaa(int width, int height)
-      : lists_(dcaa_coverage_pattern(), width, height),
-        resolve_(make_fullscreen_program("coverage_resolve.frag", "#define COVERAGE_DCAA\n")) {
-    const GLuint p = resolve_.get();
-    std::vector<float> samples;
-    for (const Vec2& s : lists_.lut().pattern().positions) samples.insert(samples.end(), {float(s.x), float(s.y)});
-    glProgramUniform2fv(p, glGetUniformLocation(p, "u_coverage_samples"), GLsizei(samples.size() / 2), samples.data());
-    glProgramUniform1i(p, glGetUniformLocation(p, "u_coverage_sample_count"), lists_.lut().pattern().size());
-    glProgramUniform1f(p, glGetUniformLocation(p, "u_cos_normal_threshold"), DcaaSettings{}.cos_normal_threshold);
-  }
-
-  void render(const GpuScene& scene, const View& view, GLuint output) override {
-    timer_.begin("main");
-    lists_.build(scene, view);
-    timer_.end();
-    timer_.begin("resolve");
-    resolve_coverage_lists(lists_, resolve_.get(), scene, view, output_target_.get({{output}}));
-    timer_.end();
-  }
-
-  double bytes_per_pixel() const override { return lists_.bytes_per_pixel(); }
-  CoverageFragmentLists* coverage_lists() override { return &lists_; }
-
- private:
-  CoverageFragmentLists lists_;
-  gl::Program resolve_;
-  gl::CachedFramebuffer output_target_;
-};
-
-}  // namespace
-
-std::unique_ptr<Technique> make_dcaa(int width, int height) { return std::make_unique<Dcaa>(width, height); }
+std::unique_ptr<Technique> make_dcaa(int width, int height) {
+  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height);
+  const GLuint p = t->resolve_program();
+  const SamplePattern& pattern = t->coverage_lists()->lut().pattern();
+  std::vector<float> samples;
+  for (const Vec2& s : pattern.positions) samples.insert(samples.end(), {float(s.x), float(s.y)});
+  glProgramUniform2fv(p, glGetUniformLocation(p, "u_coverage_samples"), GLsizei(pattern.size()), samples.data());
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_coverage_sample_count"), pattern.size());
+  glProgramUniform1f(p, glGetUniformLocation(p, "u_cos_normal_threshold"), DcaaSettings{}.cos_normal_threshold);
+  return t;
+}
 
 }  // namespace rsaa

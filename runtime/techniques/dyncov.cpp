@@ -6,36 +6,9 @@
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
-namespace {
-
-class DynamicCoverage : public Technique {
- public:
-  DynamicCoverage(int width, int height)
-      : lists_(builtin_pattern("d3d16x"), width, height),
-        resolve_(make_fullscreen_program("coverage_resolve.frag", "#define COVERAGE_DYNCOV\n")) {}
-
-  void render(const GpuScene& scene, const View& view, GLuint output) override {
-    timer_.begin("main");
-    lists_.build(scene, view);
-    timer_.end();
-    timer_.begin("resolve");
-    resolve_coverage_lists(lists_, resolve_.get(), scene, view, output_target_.get({{output}}));
-    timer_.end();
-  }
-
-  double bytes_per_pixel() const override { return lists_.bytes_per_pixel(); }
-  CoverageFragmentLists* coverage_lists() override { return &lists_; }
-
- private:
-  CoverageFragmentLists lists_;
-  gl::Program resolve_;
-  gl::CachedFramebuffer output_target_;
-};
-
-}  // namespace
 
 std::unique_ptr<Technique> make_dynamic_coverage(int width, int height) {
-  return std::make_unique<DynamicCoverage>(width, height);
+  return std::make_unique<CoverageListTechnique>(builtin_pattern("d3d16x"), "COVERAGE_DYNCOV", width, height);
 }
 
 }  // namespace rsaa
