@@ -104,14 +104,16 @@ TEST(ViewCli, SwitchesTechniquesAndTakesScreenshotsUnderXvfb) {
   TempDir dir;
   const std::string size = " --width 96 --height 72 ";
   const auto r = test::run_command("xvfb-run -a -s '-screen 0 640x480x24' " + std::string(RSAA_BINARY) +
-                                   " view" + size + "--keys '6P1P7PQ' --screenshot " +
+                                   " view" + size + "--keys '6P1P7P8P9PQ' --screenshot " +
                                    dir.file("shot-%d.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("screenshot " + dir.file("shot-2.png") + ": noaa"), std::string::npos) << r.output;
   const std::pair<const char*, const char*> expected[] = {
       {"shot-1.png", "--technique rsaa --samples 8"},
       {"shot-2.png", "--technique noaa"},
-      {"shot-3.png", "--technique rsaa --samples 4"}};
+      {"shot-3.png", "--technique rsaa --samples 4"},
+      {"shot-4.png", "--technique dcaa"},
+      {"shot-5.png", "--technique dyncov"}};
   for (const auto& [shot, technique] : expected) {
     ASSERT_TRUE(std::filesystem::exists(dir.file(shot))) << shot << "\n" << r.output;
     ASSERT_EQ(run_rsaa(std::string("render ") + technique + size + "--out " + dir.file("headless.png")).exit_code, 0);

@@ -30,7 +30,7 @@ struct ViewArgs {
 };
 
 const char* kHelp =
-    "keys: 1 noaa, 2 msaa 4x, 3 msaa 8x, 4 ssaa 16x, 5 ssaa 64x, 6 rsaa 8x, 7 rsaa 4x,\n"
+    "keys: 1 noaa, 2 msaa 4x, 3 msaa 8x, 4 ssaa 16x, 5 ssaa 64x, 6 rsaa 8x, 7 rsaa 4x, 8 dcaa, 9 dyncov,\n"
     "      S/D similarity sadp/depth, A cycle auth 0/1/2, P screenshot, Q or Esc quit\n";
 
 class Viewer {
@@ -53,6 +53,8 @@ class Viewer {
       case GLFW_KEY_5: o = technique_options("ssaa", 64); break;
       case GLFW_KEY_6: o.technique = "rsaa"; o.samples = 8; o.pattern.clear(); break;
       case GLFW_KEY_7: o.technique = "rsaa"; o.samples = 4; break;
+      case GLFW_KEY_8: o = technique_options("dcaa", 0); break;
+      case GLFW_KEY_9: o = technique_options("dyncov", 0); break;
       case GLFW_KEY_S: o.similarity = "sadp"; break;
       case GLFW_KEY_D: o.similarity = "depth"; break;
       case GLFW_KEY_A: o.auth = (o.auth + 1) % 3; break;
