@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstring>
 
-#include <glm/gtc/type_ptr.hpp>
 
 #include "runtime/gl_context.h"
 #include "runtime/scene_renderer.h"
@@ -91,7 +90,6 @@ CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_patte
   glProgramUniform2ui(p, glGetUniformLocation(p, "u_full_mask"), GLuint(full), GLuint(full >> 32));
   glProgramUniform1i(p, glGetUniformLocation(p, "u_halfplane_lut"), 1);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_heads"), 0);
-  glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(width), float(height));
   allocate_records(std::size_t(width) * height * 4);
   gl::check("coverage fragment lists");
 }
