@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <glm/gtc/packing.hpp>
+
 
 #include "runtime/gl_context.h"
 #include "runtime/scene_renderer.h"
@@ -26,8 +28,8 @@ gl::Texture make_lut_texture(const HalfPlaneLut& lut) {
 
 // The inverse of coverage_record.glsl's encode_unit_vector (octahedral, 2 x snorm16).
 Normal3 decode_unit_vector(std::uint32_t packed) {
-  const auto snorm = [](std::uint32_t v) { return std::clamp(float(std::int16_t(v & 0xffff)) / 32767.0f, -1.0f, 1.0f); };
-  float x = snorm(packed), y = snorm(packed >> 16), z = 1.0f - std::abs(x) - std::abs(y);
+  const glm::vec2 e = glm::unpackSnorm2x16(packed);
+  float x = e.x, y = e.y, z = 1.0f - std::abs(x) - std::abs(y);
   if (z < 0.0f) {
     const float ox = (1.0f - std::abs(y)) * (x >= 0.0f ? 1.0f : -1.0f);
     const float oy = (1.0f - std::abs(x)) * (y >= 0.0f ? 1.0f : -1.0f);
@@ -35,28 +37,6 @@ Normal3 decode_unit_vector(std::uint32_t packed) {
   }
   const float len = std::sqrt(x * x + y * y + z * z);
   return {x / len, y / len, z / len};
-}
-
-float half_to_float(std::uint16_t h) {
-  const std::uint32_t sign = std::uint32_t(h & 0x8000) << 16, exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
-  std::uint32_t bits;
-  if (exponent == 0) {
-    if (mantissa == 0) {
-      bits = sign;
-    } else {  // subnormal: normalise
-      int e = -1;
-      std::uint32_t m = mantissa;
-      do ++e, m <<= 1; while (!(m & 0x400));
-      bits = sign | std::uint32_t(127 - 15 - e) << 23 | (m & 0x3ff) << 13;
-    }
-  } else if (exponent == 31) {
-    bits = sign | 0x7f800000u | mantissa << 13;
-  } else {
-    bits = sign | (exponent + 127 - 15) << 23 | mantissa << 13;
-  }
-  float f;
-  std::memcpy(&f, &bits, 4);
-  return f;
 }
 
 float bits_to_float(std::uint32_t u) {
@@ -159,8 +139,8 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
         f.coverage = Mask(r[2]) | Mask(r[3]) << 32;
         f.depth = {bits_to_float(r[4]), bits_to_float(r[5]), bits_to_float(r[6])};
         f.normal = decode_unit_vector(r[7]);
-        f.colour = {half_to_float(std::uint16_t(r[8])), half_to_float(std::uint16_t(r[8] >> 16)),
-                    half_to_float(std::uint16_t(r[9]))};
+        const glm::vec2 rg = glm::unpackHalf2x16(r[8]), b = glm::unpackHalf2x16(r[9]);
+        f.colour = {rg.x, rg.y, b.x};
         list.push_back(f);
       }
       std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
