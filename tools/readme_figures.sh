@@ -11,7 +11,9 @@ cd "$(dirname "$0")/.."
 quick=0
 if [[ ${1:-} == --quick ]]; then quick=1; shift; fi
 if [[ ${1:-} == -h || ${1:-} == --help ]]; then sed -n 2,8p "$0" | sed 's/^# \{0,1\}//'; exit 0; fi
-out=${1:-out/figures$([[ $quick == 1 ]] && echo -quick)}
+default_out=out/figures
+[[ $quick == 1 ]] && default_out=out/figures-quick
+out=${1:-$default_out}
 mkdir -p "$out"
 rsaa=./build/rsaa
 [[ -x $rsaa ]] || bash tools/build.sh
