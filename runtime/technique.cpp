@@ -33,7 +33,7 @@ std::vector<TechniqueOptions> rsaa_variants() {
 }
 
 const std::vector<std::string>& technique_names() {
-  static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa", "dcaa", "dyncov"};
+  static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa", "dcaa", "dyncov", "agaa"};
   return names;
 }
 
@@ -43,6 +43,10 @@ void validate(const TechniqueOptions& o) {
     if (o.samples > 1) bad(o.technique + " takes no --samples");
   } else if (o.technique == "dcaa") {
     if (o.samples != 0 && o.samples != 64) bad("dcaa always uses 64 coverage samples");
+  } else if (o.technique == "agaa") {
+    const int n = samples_or(o, 8);
+    if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
+    if (!(o.agaa_k > 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length > 0");
   } else if (o.technique == "dyncov") {
     if (o.samples != 0 && o.samples != 16) bad("dyncov always uses 16 coverage samples");
   } else if (o.technique == "msaa") {
@@ -82,6 +86,7 @@ std::string technique_label(const TechniqueOptions& o) {
   if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
   if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
   if (o.technique == "ssaa-filtered") return "ssaa-filtered k" + std::to_string(o.kernel);
+  if (o.technique == "agaa") return "agaa " + std::to_string(samples_or(o, 8)) + "x";
   const int n = samples_or(o, 8);
   std::string label = "rsaa " + std::to_string(n) + "x ";
   if (n == 4) label += (o.pattern.empty() ? std::string("gl4x") : o.pattern) + " ";
@@ -94,6 +99,7 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
   if (o.technique == "fxaa") return make_fxaa(width, height);
   if (o.technique == "dcaa") return make_dcaa(width, height);
   if (o.technique == "dyncov") return make_dynamic_coverage(width, height);
+  if (o.technique == "agaa") return make_agaa(samples_or(o, 8), float(o.agaa_k), width, height);
   if (o.technique == "ssaa-filtered") return make_filtered_ssaa(o.kernel, width, height);
   if (o.technique == "msaa") {
     if (samples_or(o, 4) == 4) return make_hardware_msaa(4, width, height);

@@ -1,4 +1,4 @@
-// The GL coverage techniques (dcaa, dyncov) against their CPU references on the same fragments:
+// The GL coverage techniques (dcaa, dyncov, agaa) against their CPU references on the same inputs:
 // the lists the GL geometry pass built are read back, replayed through core/dcaa and
 // core/dynamic_coverage, and the resolved colours compared per pixel (within 2/255).
 #include <gtest/gtest.h>
@@ -14,6 +14,7 @@
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "runtime/technique.h"
+#include "runtime/techniques/techniques.h"
 
 namespace rsaa {
 namespace {
@@ -101,13 +102,15 @@ namespace {
 
 TEST_F(CoverageGl, EveryBuiltinSceneAndExtremeSizesGiveFiniteImages) {
   for (const std::string& name : builtin_scene_names())
-    for (const char* technique : {"dcaa", "dyncov"})
+    for (const TechniqueOptions& technique : {technique_options("dcaa"), technique_options("dyncov"),
+                                              technique_options("agaa", 4), technique_options("agaa", 8)})
       for (auto [w, h] : {std::pair{64, 48}, std::pair{1, 1}, std::pair{3, 2}}) {
         const Scene scene = load_scene("builtin:" + name);
         const GpuScene gpu(scene);
-        const Image image = render_frame(gpu, choose_camera(scene, std::nullopt), technique_options(technique), w, h);
+        const Image image = render_frame(gpu, choose_camera(scene, std::nullopt), technique, w, h);
         for (const Rgb& p : image.pixels)
-          ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b)) << name << " " << technique;
+          ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b))
+              << name << " " << technique_label(technique);
       }
 }
 
@@ -125,6 +128,62 @@ TEST_F(CoverageGl, DcaaBeatsNoAaAndListsGrowWhenTheyOverflow) {
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, 8, 8);
   t->render(gpu, make_view(camera, 8, 8), output.get());
   EXPECT_GE(t->bytes_per_pixel(), 4.0 + 40.0 * double(t->coverage_lists()->fragments()) / 64.0);
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// AGAA 8x: the GL aggregate metadata against define_aggregates() on the read-back samples, and the
+// GL image against agaa_resolve() on the read-back aggregate sums.
+TEST_F(CoverageGl, AgaaEqualsItsCpuReferenceOnTheSameSamples) {
+  for (const char* name : {"builtin:default", "builtin:fence"}) {
+    const Scene scene = load_scene(name);
+    const GpuScene gpu(scene);
+    const int w = 96, h = 72;
+    const View view = make_view(choose_camera(scene, std::nullopt), w, h);
+    auto t = make_technique(technique_options("agaa", 8), w, h);
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, w, h);
+    t->render(gpu, view, output.get());
+    const DisplayImage gl_image = to_display(read_back_image(output.get(), w, h));
+    const AgaaFrameData data = read_back_agaa(*t, view);
+    const glm::vec3 bg = gpu.background();
+    Image cpu(w, h);
+    int meta_mismatches = 0, two_aggregates = 0;
+    for (int i = 0; i < w * h; ++i) {
+      const std::vector<AgaaSample> samples(data.samples_of_pixels.begin() + i * 8, data.samples_of_pixels.begin() + (i + 1) * 8);
+      const AgaaClusters c = define_aggregates(samples, {});
+      std::uint32_t meta = std::uint32_t(c.count) << 16;
+      for (int s = 0; s < 8; ++s)
+        if (c.aggregate[s] >= 0) meta |= (1u << s) | (std::uint32_t(c.aggregate[s]) << (8 + s));
+      meta_mismatches += meta != data.meta[i];
+      two_aggregates += c.count == 2;
+      cpu.pixels[i] = agaa_resolve({data.aggregates[2 * i], data.aggregates[2 * i + 1]}, data.pixel_rays[i],
+                                   {bg.r, bg.g, bg.b});
+    }
+    EXPECT_GT(two_aggregates, 50) << name;                 // edges make two aggregates
+    EXPECT_LE(meta_mismatches, w * h / 200) << name;       // float ties may differ
+    const DisplayImage cpu_image = to_display(cpu);
+    int worst = 0;
+    for (std::size_t i = 0; i < cpu_image.rgb.size(); ++i)
+      worst = std::max(worst, std::abs(int(cpu_image.rgb[i]) - int(gl_image.rgb[i])));
+    EXPECT_LE(worst, 2) << name;
+  }
+}
+
+TEST_F(CoverageGl, AgaaBeatsNoAaWithHardwareAndJitteredSamples) {
+  const Scene scene = load_scene("builtin:default");
+  const GpuScene gpu(scene);
+  const Camera camera = choose_camera(scene, std::nullopt);
+  const auto display = [&](const TechniqueOptions& o) { return to_display(render_frame(gpu, camera, o, 160, 120)); };
+  const DisplayImage reference = display(technique_options("ssaa", 64));
+  const double noaa = compare_images(display(technique_options("noaa")), reference).psnr_db;
+  for (int n : {4, 8}) {
+    const double agaa = compare_images(display(technique_options("agaa", n)), reference).psnr_db;
+    EXPECT_GT(agaa, noaa + 3.0) << n;
+  }
 }
 
 }  // namespace

@@ -62,6 +62,7 @@ cp "$out/bench/passes-default.png" docs/images/bench_passes_default.png
 cp "$out/bench/pareto-2CylinderEngine.png" docs/images/bench_pareto_engine.png
 cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
 cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
+mkdir -p "$out/scene-tables"
 for scene in builtin:default "$engine"; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}
   step "scene-specific table, $name" "scene-table-$name.md"

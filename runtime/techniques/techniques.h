@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/agaa.h"
 #include "core/vec2.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/gl_context.h"
@@ -19,6 +20,19 @@ std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height)
 // Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
 std::unique_ptr<Technique> make_dcaa(int width, int height);
 std::unique_ptr<Technique> make_dynamic_coverage(int width, int height);
+// AGAA with 2 aggregates over `samples` (4: hardware MSAA, 8: jittered) visibility samples.
+std::unique_ptr<Technique> make_agaa(int samples, float k, int width, int height);
+
+// The last frame's buffers of an agaa technique with jittered samples (multisampled textures
+// cannot be read back), rows top first: for the tests' CPU oracle.
+struct AgaaFrameData {
+  int width = 0, height = 0, samples = 0;
+  std::vector<AgaaSample> samples_of_pixels;  // width * height * samples
+  std::vector<std::uint32_t> meta;            // width * height, agaa_samples.glsl's layout
+  std::vector<AgaaAggregateSums> aggregates;  // width * height * 2
+  std::vector<Normal3> pixel_rays;            // width * height, view space
+};
+AgaaFrameData read_back_agaa(Technique& agaa, const View& view);
 std::unique_ptr<Technique> make_hardware_msaa(int samples, int width, int height);
 std::unique_ptr<Technique> make_jittered_supersampling(std::vector<Vec2> positions, int width, int height);
 // mask_output: an R32UI texture that receives the masks when settings.output_mask.

@@ -58,6 +58,8 @@ std::vector<TechniqueOptions> default_techniques() {
   }
   list.push_back(technique_options("dyncov", 0));
   list.push_back(technique_options("dcaa", 0));
+  list.push_back(technique_options("agaa", 4));
+  list.push_back(technique_options("agaa", 8));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
   return list;
 }

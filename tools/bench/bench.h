@@ -39,7 +39,7 @@ struct TechniqueResult {
 };
 
 // The default technique list: noaa, fxaa, msaa 4x/8x, ssaa 16x, ssaa-filtered kernels 1-3,
-// dyncov, dcaa and the 12 RSAA variants.
+// dyncov, dcaa, agaa 4x/8x and the 12 RSAA variants.
 std::vector<TechniqueOptions> default_techniques();
 // The built-in scenes and the assimp test models the tests use.
 std::vector<std::string> default_scenes();

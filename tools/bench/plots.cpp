@@ -23,6 +23,7 @@ cv::Scalar family_colour(const TechniqueResult& r) {
   if (r.options.technique == "ssaa-filtered") return {120, 160, 20};
   if (r.options.technique == "dcaa") return {20, 180, 200};
   if (r.options.technique == "dyncov") return {140, 140, 0};
+  if (r.options.technique == "agaa") return {200, 60, 140};
   return r.options.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);
 }
 
@@ -243,7 +244,7 @@ namespace rsaa::bench {
 
 const std::vector<std::string>& crop_labels() {
   static const std::vector<std::string> labels = {
-      "noaa", "fxaa", "msaa 4x", "ssaa-filtered k2", "dyncov", "dcaa", "agaa", "rsaa 4x gl4x sadp auth0",
+      "noaa", "fxaa", "msaa 4x", "ssaa-filtered k2", "dyncov", "dcaa", "agaa 8x", "rsaa 4x gl4x sadp auth0",
       "rsaa 8x sadp auth0", "rsaa 8x sadp auth2"};
   return labels;
 }

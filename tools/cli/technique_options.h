@@ -11,9 +11,10 @@ namespace rsaa::cli {
 constexpr double kSceneLoadSeconds = 120.0;
 
 inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
-  cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | ssaa-filtered | rsaa")->capture_default_str();
+  cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | ssaa-filtered | rsaa | dcaa | dyncov | agaa")->capture_default_str();
   cmd->add_option("--samples", o.samples,
-                  "msaa: 4 (hardware) | 8 (jittered); ssaa: 16 | 64; rsaa: 4 | 8 (default 8)");
+                  "msaa: 4 (hardware) | 8 (jittered); ssaa: 16 | 64; rsaa: 4 | 8 (default 8); agaa: 4 (hardware) | 8 "
+                  "(jittered, default)");
   cmd->add_option("--similarity", o.similarity, "rsaa: sadp | depth")->capture_default_str();
   cmd->add_option("--auth", o.auth, "rsaa authentication: 0 none, 1 post-pass, 2 pre-pass")
       ->capture_default_str();
@@ -25,6 +26,9 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
   cmd->add_option("--kernel", o.kernel,
                   "ssaa-filtered downsampling: 1 box 2x2, 2 five-tap rotated grid, 3 lerp of a large "
                   "and the five-tap kernel by the object's filter alpha")
+      ->capture_default_str();
+  cmd->add_option("--agaa-k", o.agaa_k,
+                  "agaa: characteristic length of the clustering distance, scene units (the paper: 10 cm)")
       ->capture_default_str();
 }
 
