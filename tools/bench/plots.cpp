@@ -22,8 +22,8 @@ cv::Scalar family_colour(const TechniqueResult& r) {
   if (r.options.technique == "ssaa") return {40, 150, 40};
   if (r.options.technique == "ssaa-filtered") return {120, 160, 20};
   if (r.options.technique == "dcaa") return {20, 180, 200};
-  if (r.options.technique == "dyncov") return {140, 140, 0};
-  if (r.options.technique == "agaa") return {200, 60, 140};
+  if (r.options.technique == "dyncov") return {0, 110, 160};
+  if (r.options.technique == "agaa") return {110, 110, 110};
   return r.options.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);
 }
 
@@ -120,6 +120,7 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
   const std::map<std::string, cv::Scalar> colours = {{"main", {200, 130, 60}},
                                                      {"pre-pass", {60, 60, 210}},
                                                      {"post-process", {60, 170, 60}},
+                                                     {"aggregates", {170, 80, 150}},
                                                      {"resolve", {160, 160, 160}}};
   const int width = 960, row_h = 24, left = 190, right = 70, top = 40;
   const int height = top + int(rows.size()) * row_h + 70;
