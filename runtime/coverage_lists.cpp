@@ -96,7 +96,6 @@ std::size_t CoverageFragmentLists::build(const GpuScene& scene, const View& view
     glProgramUniform2f(program_.get(), glGetUniformLocation(program_.get(), "u_viewport"), float(view.width),
                        float(view.height));
     SceneRenderer::draw(scene, view, {0.0f, 0.0f}, program_.get());
-    glDisable(GL_DEPTH_TEST);  // (draw() enables it; the lists must see every fragment)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     std::uint32_t used = 0;
