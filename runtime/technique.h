@@ -1,5 +1,5 @@
 // Every anti-aliasing technique is a render pass behind this one interface (Falcor-style),
-// chosen by name (DESIGN.md section 4): noaa, msaa, ssaa, rsaa, ...
+// chosen by name (docs/conventions.md section 4): noaa, msaa, ssaa, rsaa, ...
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// rsaa bench: the speed/accuracy trade of every technique on a set of scenes (DESIGN.md
+// rsaa bench: the speed/accuracy trade of every technique on a set of scenes (docs/conventions.md
 // section 5): per-pass and whole-frame times (medians, warm-up excluded, as ratios to the no-AA
 // frame of the same run), PSNR / SSIM / luminance-error share against 64x SSAA, temporal quality
 // over a short camera orbit, and memory per pixel.

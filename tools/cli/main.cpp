@@ -1,4 +1,4 @@
-// rsaa: one executable, one subcommand per job (DESIGN.md section 4).
+// rsaa: one executable, one subcommand per job (docs/conventions.md section 4).
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
