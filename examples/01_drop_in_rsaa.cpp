@@ -21,16 +21,11 @@ int main(int argc, char** argv) {
         -1.5f, -1.0f, -0.5f, 0.1f, 0.3f, 0.8f,  1.5f, -0.6f, -0.5f, 0.1f, 0.3f, 0.8f,
         0.1f,  1.2f,  -0.5f, 0.1f, 0.3f, 0.8f,  -0.8f, 0.9f, 0.3f,  0.9f, 0.3f, 0.1f,
         1.0f,  0.2f,  0.3f,  0.9f, 0.3f, 0.1f,  -0.2f, -1.1f, 0.3f, 0.9f, 0.3f, 0.1f};
-    GLuint buffer, vao;
+    GLuint buffer;
     glCreateBuffers(1, &buffer);
     glNamedBufferStorage(buffer, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), 0);
-    glCreateVertexArrays(1, &vao);
+    const GLuint vao = engine::make_vertex_array({{0, 0, 3, 0}, {3, 0, 3, 3}});
     glVertexArrayVertexBuffer(vao, 0, buffer, 0, 6 * sizeof(float));
-    for (const auto& [location, offset] : {std::pair{0u, 0u}, std::pair{3u, 3u}}) {
-      glEnableVertexArrayAttrib(vao, location);
-      glVertexArrayAttribFormat(vao, location, 3, GL_FLOAT, GL_FALSE, offset * sizeof(float));
-      glVertexArrayAttribBinding(vao, location, 0);
-    }
     const glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0));
     const glm::mat4 projection = glm::perspective(glm::radians(45.0f), float(width) / height, 1.0f, 10.0f);
 

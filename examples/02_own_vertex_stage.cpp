@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
                                             {0.0f, -0.5f, -0.3f, -0.2f, 0.2f, 0.7f, 0.3f},
                                             {-0.3f, 0.0f, 0.1f, 1.2f, 0.2f, 0.3f, 0.9f},
                                             {0.5f, 0.1f, 0.4f, -1.0f, 0.9f, 0.8f, 0.2f}};
-    GLuint buffers[3], source_vao, captured_vao;
+    GLuint buffers[3];
     glCreateBuffers(3, buffers);
     const GLuint grid_buffer = buffers[0], instance_buffer = buffers[1], captured = buffers[2];
     glNamedBufferStorage(grid_buffer, GLsizeiptr(grid.size() * sizeof(float)), grid.data(), 0);
@@ -63,42 +63,21 @@ int main(int argc, char** argv) {
     const GLsizeiptr captured_bytes = GLsizeiptr(kInstances) * kVerticesPerInstance * 6 * sizeof(float);
     glNamedBufferStorage(captured, captured_bytes, nullptr, 0);
 
-    glCreateVertexArrays(1, &source_vao);
+    // Grid vertices at binding 0, one instance record per instance at binding 1.
+    const GLuint source_vao = engine::make_vertex_array({{0, 0, 2, 0}, {1, 1, 4, 0}, {2, 1, 3, 4}});
     glVertexArrayVertexBuffer(source_vao, 0, grid_buffer, 0, 2 * sizeof(float));
     glVertexArrayVertexBuffer(source_vao, 1, instance_buffer, 0, 7 * sizeof(float));
     glVertexArrayBindingDivisor(source_vao, 1, 1);
-    const GLuint attribute_binding[3][4] = {{0, 0, 2, 0}, {1, 1, 4, 0}, {2, 1, 3, 4}};
-    for (const auto& [location, binding, size, offset] : attribute_binding) {
-      glEnableVertexArrayAttrib(source_vao, location);
-      glVertexArrayAttribFormat(source_vao, location, GLint(size), GL_FLOAT, GL_FALSE, offset * sizeof(float));
-      glVertexArrayAttribBinding(source_vao, location, binding);
-    }
     // The captured vertices as the G-buffer and pre-pass programs read them: 0 position, 3 albedo.
-    glCreateVertexArrays(1, &captured_vao);
+    const GLuint captured_vao = engine::make_vertex_array({{0, 0, 3, 0}, {3, 0, 3, 3}});
     glVertexArrayVertexBuffer(captured_vao, 0, captured, 0, 6 * sizeof(float));
-    for (const auto& [location, offset] : {std::pair{0u, 0u}, std::pair{3u, 3u}}) {
-      glEnableVertexArrayAttrib(captured_vao, location);
-      glVertexArrayAttribFormat(captured_vao, location, 3, GL_FLOAT, GL_FALSE, offset * sizeof(float));
-      glVertexArrayAttribBinding(captured_vao, location, 0);
-    }
 
     // The engine's vertex stage, once per frame, captured interleaved.
-    const GLuint deform_program = glCreateProgram();
-    {
-      const GLuint shader = glCreateShader(GL_VERTEX_SHADER);
-      const std::string text = std::string("#version 450 core\n") + kDeformVertex;
-      const char* pointer = text.c_str();
-      glShaderSource(shader, 1, &pointer, nullptr);
-      glCompileShader(shader);
-      glAttachShader(deform_program, shader);
-      const char* captured_names[] = {"tf_position", "tf_albedo"};
-      glTransformFeedbackVaryings(deform_program, 2, captured_names, GL_INTERLEAVED_ATTRIBS);
-      glLinkProgram(deform_program);
-      glDeleteShader(shader);
-      GLint linked = 0;
-      glGetProgramiv(deform_program, GL_LINK_STATUS, &linked);
-      if (!linked) throw std::runtime_error("the deformation program does not link");
-    }
+    const GLuint deform_program =
+        engine::link_program({{GL_VERTEX_SHADER, kDeformVertex}}, [](GLuint program) {
+          const char* captured_names[] = {"tf_position", "tf_albedo"};
+          glTransformFeedbackVaryings(program, 2, captured_names, GL_INTERLEAVED_ATTRIBS);
+        });
     // (A surfaceless context has no default framebuffer: draws need one bound, discard or not.)
     const engine::GBuffer gbuffer(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, gbuffer.framebuffer);

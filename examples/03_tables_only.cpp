@@ -96,14 +96,11 @@ int main(int argc, char** argv) {
 
     const std::vector<float> positions = {-1.5f, -1.0f, -0.5f, 1.5f, -0.6f, -0.5f, 0.1f, 1.2f, -0.5f,
                                           -0.8f, 0.9f,  0.3f,  1.0f, 0.2f,  0.3f,  -0.2f, -1.1f, 0.3f};
-    GLuint buffer, vao;
+    GLuint buffer;
     glCreateBuffers(1, &buffer);
     glNamedBufferStorage(buffer, GLsizeiptr(positions.size() * sizeof(float)), positions.data(), 0);
-    glCreateVertexArrays(1, &vao);
+    const GLuint vao = engine::make_vertex_array({{0, 0, 3, 0}});
     glVertexArrayVertexBuffer(vao, 0, buffer, 0, 3 * sizeof(float));
-    glEnableVertexArrayAttrib(vao, 0);
-    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao, 0, 0);
     const glm::mat4 view_projection =
         glm::perspective(glm::radians(45.0f), float(width) / height, 1.0f, 10.0f) *
         glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0));

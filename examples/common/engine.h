@@ -58,34 +58,54 @@ inline std::string read_text_file(const std::string& path) {
   return text.str();
 }
 
-// Compiles and links; each stage's source follows "#version 450 core". Throws with the log.
-inline GLuint make_program(const std::vector<std::pair<GLenum, std::string>>& stages) {
+// Compiles each stage (its source follows "#version 450 core") and attaches it to `program`;
+// then `before_link(program)` (e.g. transform feedback varyings) and links. Throws with the log.
+template <typename BeforeLink>
+GLuint link_program(const std::vector<std::pair<GLenum, std::string>>& stages, BeforeLink before_link) {
   const GLuint program = glCreateProgram();
+  char log[4096] = "";
   for (const auto& [stage, source] : stages) {
     const GLuint shader = glCreateShader(stage);
     const std::string text = "#version 450 core\n" + source;
     const char* pointer = text.c_str();
     glShaderSource(shader, 1, &pointer, nullptr);
     glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-      char log[4096];
-      glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-      throw std::runtime_error(std::string("shader compile error: ") + log);
-    }
+    GLint compiled = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    if (!compiled) throw std::runtime_error(std::string("shader compile error: ") + log);
     glAttachShader(program, shader);
     glDeleteShader(shader);
   }
+  before_link(program);
   glLinkProgram(program);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("program link error: ") + log);
-  }
+  GLint linked = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &linked);
+  glGetProgramInfoLog(program, sizeof log, nullptr, log);
+  if (!linked) throw std::runtime_error(std::string("program link error: ") + log);
   return program;
+}
+
+inline GLuint make_program(const std::vector<std::pair<GLenum, std::string>>& stages) {
+  return link_program(stages, [](GLuint) {});
+}
+
+// A vertex array reading float attributes: {location, buffer binding, components, first float}.
+struct FloatAttribute {
+  GLuint location, binding;
+  GLint components;
+  GLuint first_float;
+};
+inline GLuint make_vertex_array(const std::vector<FloatAttribute>& attributes) {
+  GLuint vao;
+  glCreateVertexArrays(1, &vao);
+  for (const FloatAttribute& a : attributes) {
+    glEnableVertexArrayAttrib(vao, a.location);
+    glVertexArrayAttribFormat(vao, a.location, a.components, GL_FLOAT, GL_FALSE,
+                              a.first_float * GLuint(sizeof(float)));
+    glVertexArrayAttribBinding(vao, a.location, a.binding);
+  }
+  return vao;
 }
 
 inline GLuint make_texture(GLenum format, int width, int height, GLenum filter = GL_NEAREST) {
