@@ -179,8 +179,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                    defines, "RSAA post-process");
   std::vector<glm::ivec2> steps;
   for (const Vec2& s : pattern_.positions) steps.push_back(window_step(s));
-  glProgramUniform2iv(gl_->post_program.get(), glGetUniformLocation(gl_->post_program.get(), "u_neighbours"),
-                      n, glm::value_ptr(steps[0]));
+  const GLuint post = gl_->post_program.get();
+  glProgramUniform2iv(post, glGetUniformLocation(post, "u_neighbours"), n, glm::value_ptr(steps[0]));
   gl::check("creating the RSAA pass");
 }
 RsaaPass::~RsaaPass() = default;
