@@ -5,7 +5,8 @@
 // every GL header typedefs GLuint to), so it compiles beside epoxy, glad, GLEW or the Khronos
 // headers alike. The library calls GL through libepoxy internally; epoxy resolves entry points
 // for whichever context is current (EGL or GLX), so it coexists with the engine's own loader.
-// Every call needs a current OpenGL 4.5 core context on the calling thread.
+// Every call, the destructors included, needs the OpenGL 4.5 core context the object was made
+// in to be current on the calling thread.
 //
 // THE FRAME. The engine renders its 1x frame into four textures of the pass's width x height:
 //   colour            GL_RGBA16F (linear light), GL_LINEAR filtering, clamp to edge
@@ -19,12 +20,14 @@
 // field, so a forgotten or wrong binding is an error, not a wrong image.
 //
 // THE PRE-PASS CALLBACK. render_subsamples() calls `draw_geometry(program, jitter_ndc)` once
-// per subsample, with its own framebuffer bound, the viewport set to the frame, depth test on
-// (GL_LESS, depth writes on) and blending off. The callback must draw the same geometry as the
-// 1x frame with `program` (it throws std::logic_error if another program is current afterwards)
-// after setting on it:
-//   vertex attributes  0 position (vec3, model = world space), 1 normal, 2 uv, 3 albedo
-//                      (only 0 matters to the pre-pass; others may stay disabled)
+// per subsample, with its own framebuffer bound, `program` current, the viewport set to the
+// frame, depth test on (GL_LESS, depth writes on), blending and scissor test off. The callback
+// draws the same geometry as the 1x frame with `program` (render_subsamples() throws
+// std::logic_error if another program is current when it returns), after setting on it:
+//   vertex attributes  0 position (vec3, world space: the pre-pass applies no model matrix,
+//                      so instanced, skinned or morphed geometry is baked into a buffer first,
+//                      as examples/02_own_vertex_stage.cpp does), 1 normal, 2 uv, 3 albedo
+//                      (only 0 matters to the pre-pass; the others may stay disabled)
 //   u_view, u_projection (mat4)   the frame's camera, unjittered
 //   u_jitter_ndc (vec2)           = jitter_ndc: the image translation that puts this subsample
 //                                   on the pixel centre
@@ -33,8 +36,9 @@
 // The pass sets every other uniform and texture of its own programs.
 //
 // GL STATE. Both calls restore what they change: framebuffer bindings, viewport, current
-// program, depth test/function/mask, blending, the vertex array and the textures bound to
-// units 0-3. Textures and programs they create belong to the RsaaPass object.
+// program, depth test/function/mask, blending, scissor test, colour mask 0, the vertex array and
+// the textures bound to units 0-3; the engine's scissor and masks do not reach the pass.
+// Textures and programs they create belong to the RsaaPass object.
 #pragma once
 
 #include <functional>
