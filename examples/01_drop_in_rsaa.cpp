@@ -43,8 +43,8 @@ int main(int argc, char** argv) {
     glDrawArrays(GL_TRIANGLES, 0, 6);
     engine::check_gl("G-buffer");
 
-    // RSAA: 8 subsamples, SADP, post-pass authentication. The callback draws the same
-    // geometry with the pre-pass program it is given (uniforms as rsaa_pass.h lists them).
+    // RSAA: 8 subsamples, the default similarity, post-pass authentication. The callback draws
+    // the same geometry with the pre-pass program it is given (uniforms as rsaa_pass.h lists).
     rsaa::RsaaSettings settings;
     settings.auth = 1;
     rsaa::RsaaPass rsaa(settings, width, height);
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
     engine::write_ppm(out_dir + "/01_noaa.ppm", gbuffer.colour, width, height);
     engine::write_ppm(out_dir + "/01_rsaa.ppm", output, width, height);
     engine::check_gl("read-back");
-    std::printf("wrote %s/01_rsaa.ppm (%dx%d, RSAA 8x SADP auth 1 on the engine's G-buffer)\n",
+    std::printf("wrote %s/01_rsaa.ppm (%dx%d, RSAA 8x auth 1 on the engine's G-buffer)\n",
                 out_dir.c_str(), width, height);
     return 0;
   } catch (const std::exception& e) {

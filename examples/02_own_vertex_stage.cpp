@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
     draw_captured();
     engine::check_gl("G-buffer");
 
-    rsaa::RsaaPass rsaa(rsaa::RsaaSettings{}, width, height);  // 8x SADP, no authentication
+    rsaa::RsaaPass rsaa(rsaa::RsaaSettings{}, width, height);  // the default settings: d3d8x
     const rsaa::RsaaFrame frame{gbuffer.colour, gbuffer.normal, gbuffer.primitive, gbuffer.depth,
                                 width,          height,         glm::inverse(projection)};
     rsaa.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
     engine::write_ppm(out_dir + "/02_noaa.ppm", gbuffer.colour, width, height);
     engine::write_ppm(out_dir + "/02_rsaa.ppm", output, width, height);
     engine::check_gl("read-back");
-    std::printf("wrote %s/02_rsaa.ppm (%d instances of a deformed strip, RSAA 8x SADP)\n",
+    std::printf("wrote %s/02_rsaa.ppm (%d instances of a deformed strip, RSAA 8x)\n",
                 out_dir.c_str(), kInstances);
     return 0;
   } catch (const std::exception& e) {
