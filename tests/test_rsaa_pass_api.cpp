@@ -78,6 +78,12 @@ TEST_F(RsaaPassApi, ACallbackDrawingWithAnotherProgramIsAnError) {
   }
 }
 
+void run_pre_pass(RsaaPass& pass, const RsaaFrame& frame, const GpuScene& gpu, const View& view) {
+  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
+    SceneRenderer::draw(gpu, view, jitter, program);
+  });
+}
+
 TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   const Scene scene = load_scene("builtin:default");
   const GpuScene gpu(scene);
@@ -105,9 +111,7 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
 
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
   const RsaaFrame frame = targets.frame(view.inverse_projection());
-  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
-    SceneRenderer::draw(gpu, view, jitter, program);
-  });
+  run_pre_pass(pass, frame, gpu, view);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   pass.resolve(frame, output.get());
 
@@ -138,9 +142,7 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   const gl::Texture clean_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
-  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
-    SceneRenderer::draw(gpu, view, jitter, program);
-  });
+  run_pre_pass(pass, frame, gpu, view);
   pass.resolve(frame, clean_output.get());
   const Image a = read_back_image(output.get(), kWidth, kHeight);
   const Image b = read_back_image(clean_output.get(), kWidth, kHeight);
