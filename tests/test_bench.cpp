@@ -9,6 +9,7 @@
 #include "runtime/gl_context.h"
 #include "tests/test_util.h"
 #include "tools/bench/bench.h"
+#include "tools/bench/copy_pass.h"
 
 namespace rsaa {
 namespace {
@@ -54,6 +55,7 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
     EXPECT_GT(r.flicker_psnr_db, 0.0) << r.label;
     EXPECT_GT(r.bytes_per_pixel, 0.0) << r.label;
     EXPECT_FALSE(r.pass_medians.empty()) << r.label;
+    EXPECT_GT(r.copy_ms, 0.0) << r.label;
   }
   EXPECT_GT(results[4].psnr_db, results[0].psnr_db);  // ssaa 16x beats no AA
   EXPECT_GT(std::filesystem::file_size(crops.file("crops-edges.png")), 1000u);
@@ -64,6 +66,9 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   for (const char* key : {"scene", "technique", "passes", "frame_ms", "frame_ratio_to_noaa", "psnr_db", "ssim",
                           "luma_error_share_percent", "orbit_psnr_db", "flicker_psnr_db", "bytes_per_pixel", "pareto"})
     EXPECT_TRUE(json["results"][0].contains(key)) << key;
+  for (const auto& pass : json["results"][1].at("passes"))
+    EXPECT_DOUBLE_EQ(pass.at("copy_multiple").get<double>(),
+                     pass.at("wall_ms").get<double>() / results[1].copy_ms);
   std::istringstream csv(bench::results_csv(results));
   std::string line;
   int lines = 0;
@@ -82,12 +87,28 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   const std::string report = bench::results_markdown(o, results);
   EXPECT_NE(report.find("| edges | * noaa |"), std::string::npos) << report;
   EXPECT_NE(report.find("RSAA 8x - 4x"), std::string::npos);
+  EXPECT_NE(report.find("| edges | fxaa | "), std::string::npos) << report;  // the per-pass table
   test::write_text(dir.file("broken.json"), "{\"format\": \"rsaa-bench\"}");
   EXPECT_THROW(bench::read_results_json(dir.file("broken.json"), read_options), std::runtime_error);
   bench::plot_pareto(results, results[0].scene, dir.file("pareto.png"));
   bench::plot_pass_times(results, results[0].scene, dir.file("passes.png"));
   EXPECT_GT(std::filesystem::file_size(dir.file("pareto.png")), 1000u);
   EXPECT_GT(std::filesystem::file_size(dir.file("passes.png")), 1000u);
+}
+
+TEST(Bench, CopyPassCopiesTheFrame) {
+  // The speed of light is only honest if the pass really reads and writes every pixel.
+  gl::HeadlessContext context;
+  const int w = 5, h = 3;
+  std::vector<float> texels;
+  for (int i = 0; i < w * h; ++i) texels.insert(texels.end(), {(i % w) / 4.0f, (i / w) / 2.0f, 0.25f, 1.0f});
+  const gl::Texture source = gl::make_texture_2d(GL_RGBA16F, w, h);
+  glTextureSubImage2D(source.get(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, texels.data());
+  bench::CopyPass copy(w, h);
+  EXPECT_GE(copy.time_ms(source.get()), 0.0);
+  std::vector<float> out(texels.size());
+  glGetTextureImage(copy.target(), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
+  for (std::size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], texels[i], 0.51 / 255.0) << i;  // 8-bit rounding
 }
 
 TEST(Bench, CropsShowTheRegionWhereTheFirstImageIsWrong) {

@@ -31,6 +31,9 @@ struct TechniqueResult {
   std::vector<PassTime> pass_medians;  // median over the timed frames, per pass
   double frame_ms = 0.0;               // median of the frames' summed wall-clock pass times
   double frame_ratio = 0.0;            // frame_ms / noaa frame_ms of the same scene
+  // The speed of light: median wall time of a full-screen copy pass (copy_pass.h) timed after
+  // each of this technique's timed frames, at the same size; 0 in files from before it existed.
+  double copy_ms = 0.0;
   double psnr_db = 0.0, ssim = 0.0, luma_error_share = 0.0;  // static frame vs 64x SSAA
   double orbit_psnr_db = 0.0;    // mean per-frame PSNR over the orbit
   double flicker_psnr_db = 0.0;  // PSNR of frame-to-frame differences vs the reference's
@@ -48,6 +51,9 @@ using Progress = std::function<void(const std::string& what, int done, int total
 
 // Needs a current GL context.
 std::vector<TechniqueResult> run_bench(const BenchOptions& options, const Progress& progress);
+
+// A pass's wall time as a multiple of the copy pass timed beside it (0 when unknown).
+double copy_multiple(const TechniqueResult& result, const PassTime& pass);
 
 // Marks the Pareto front of each scene (time ratio down, PSNR up).
 void mark_pareto(std::vector<TechniqueResult>& results);
