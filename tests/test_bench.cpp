@@ -10,6 +10,10 @@
 #include "tests/test_util.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/copy_pass.h"
+#include "tools/bench/growth.h"
+#include "runtime/render.h"
+#include "runtime/scene.h"
+#include "core/image_metrics.h"
 
 namespace rsaa {
 namespace {
@@ -109,6 +113,68 @@ TEST(Bench, CopyPassCopiesTheFrame) {
   std::vector<float> out(texels.size());
   glGetTextureImage(copy.target(), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
   for (std::size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], texels[i], 0.51 / 255.0) << i;  // 8-bit rounding
+}
+
+TEST(BenchGrowth, SubdividingChangesTheTriangleCountNotTheImage) {
+  gl::HeadlessContext context;
+  const Scene scene = load_scene("builtin:default");
+  const Scene split = bench::subdivide(scene, 2);
+  EXPECT_EQ(split.triangle_count(), 16 * scene.triangle_count());
+  EXPECT_EQ(split.draws.size(), scene.draws.size());
+  const Camera camera = choose_camera(scene, std::nullopt);
+  const auto render = [&](const Scene& s) {
+    const GpuScene gpu(s);
+    return to_display(render_frame(gpu, camera, technique_options("noaa"), 160, 120));
+  };
+  // Only rasterisation of the new inner edges and float rounding may differ.
+  EXPECT_GT(compare_images(render(split), render(scene)).psnr_db, 40.0);
+}
+
+TEST(BenchGrowth, SlopesOfKnownPoints) {
+  bench::GrowthResults r;
+  for (int side : {100, 200, 400}) {  // frame ms = 2 + 3 ms per megapixel; and proportional to triangles
+    bench::GrowthPoint p;
+    p.label = "t";
+    p.width = side, p.height = side;
+    p.frame_ms = 2.0 + 3.0 * side * side / 1e6;
+    r.points.push_back(p);
+    p.axis = bench::GrowthAxis::Triangles;
+    p.triangles = std::size_t(side) * 1000;
+    p.frame_ms = 0.5 * side;
+    r.points.push_back(p);
+  }
+  const auto slopes = bench::growth_slopes(r);
+  ASSERT_EQ(slopes.size(), 2u);
+  EXPECT_EQ(slopes[0].axis, bench::GrowthAxis::Pixels);
+  EXPECT_NEAR(slopes[0].ms_per_unit, 3.0, 1e-9);
+  EXPECT_LT(slopes[0].exponent, 1.0);  // the constant 2 ms makes it sub-linear
+  EXPECT_NEAR(slopes[1].exponent, 1.0, 1e-9);
+  EXPECT_NEAR(slopes[1].ms_per_unit, 0.5 * 100, 1e-9);  // per 100k triangles
+}
+
+TEST(BenchGrowth, TinyRunWritesEveryPoint) {
+  gl::HeadlessContext context;
+  bench::GrowthOptions o;
+  o.scene = "builtin:edges";
+  o.techniques = {technique_options("noaa"), technique_options("rsaa", 8)};
+  o.sizes = {{32, 24}, {64, 48}};
+  o.subdivision_levels = {0, 1};
+  o.width = 32, o.height = 24, o.frames = 1;
+  const auto r = bench::run_growth(o, nullptr);
+  ASSERT_EQ(r.points.size(), 8u);
+  EXPECT_EQ(r.points[5].triangles, r.base_triangles);
+  EXPECT_EQ(r.points[7].triangles, 4 * r.base_triangles);
+  for (const auto& p : r.points) EXPECT_GT(p.frame_ms, 0.0) << p.label;
+  const auto json = nlohmann::json::parse(bench::growth_json(o, r));
+  EXPECT_EQ(json.at("points").size(), 8u);
+  EXPECT_EQ(json.at("slopes").size(), 4u);
+  const std::string md = bench::growth_markdown(o, r);
+  EXPECT_NE(md.find("| rsaa 8x sadp auth0 |"), std::string::npos) << md;
+  test::TempDir dir;
+  bench::plot_growth(r, bench::GrowthAxis::Pixels, dir.file("pixels.png"));
+  bench::plot_growth(r, bench::GrowthAxis::Triangles, dir.file("triangles.png"));
+  EXPECT_GT(std::filesystem::file_size(dir.file("pixels.png")), 1000u);
+  EXPECT_GT(std::filesystem::file_size(dir.file("triangles.png")), 1000u);
 }
 
 TEST(Bench, CropsShowTheRegionWhereTheFirstImageIsWrong) {

@@ -74,6 +74,34 @@ std::vector<std::string> default_scenes() {
   return scenes;
 }
 
+FrameTiming time_frames(Technique& t, const GpuScene& gpu, const View& view, GLuint output, int frames,
+                        CopyPass& copy) {
+  t.render(gpu, view, output);  // warm-up: shader compilation
+  t.take_pass_times();
+  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> per_pass;
+  std::vector<std::string> pass_order;
+  std::vector<double> frame_ms, copy_ms;
+  for (int k = 0; k < frames; ++k) {
+    t.render(gpu, view, output);
+    double sum = 0.0;
+    for (const PassTime& p : t.take_pass_times()) {
+      if (!per_pass.count(p.pass)) pass_order.push_back(p.pass);
+      per_pass[p.pass].first.push_back(p.wall_milliseconds);
+      per_pass[p.pass].second.push_back(p.milliseconds);
+      sum += p.wall_milliseconds;
+    }
+    frame_ms.push_back(sum);
+    // Beside every frame, so that the ratio sees the same load on the shared machine.
+    copy_ms.push_back(copy.time_ms(output));
+  }
+  FrameTiming out;
+  for (const std::string& pass : pass_order)
+    out.pass_medians.push_back({pass, median(per_pass[pass].second), median(per_pass[pass].first)});
+  out.frame_ms = median(frame_ms);
+  out.copy_ms = median(copy_ms);
+  return out;
+}
+
 std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& progress) {
   if (o.techniques.empty() || o.techniques.front().technique != "noaa")
     throw std::invalid_argument("bench: the first technique must be noaa (the ratio baseline)");
@@ -116,28 +144,10 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
       if (progress) progress(spec + ": " + r.label, done, total);
       auto t = make_technique(options, o.width, o.height);
       const View view = make_view(cameras[0], o.width, o.height);
-      t->render(gpu, view, output.get());  // warm-up: shader compilation
-      t->take_pass_times();
-      std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> per_pass;
-      std::vector<std::string> pass_order;
-      std::vector<double> frame_ms, copy_ms;
-      for (int k = 0; k < o.frames; ++k) {
-        t->render(gpu, view, output.get());
-        double sum = 0.0;
-        for (const PassTime& p : t->take_pass_times()) {
-          if (!per_pass.count(p.pass)) pass_order.push_back(p.pass);
-          per_pass[p.pass].first.push_back(p.wall_milliseconds);
-          per_pass[p.pass].second.push_back(p.milliseconds);
-          sum += p.wall_milliseconds;
-        }
-        frame_ms.push_back(sum);
-        // Beside every frame, so that the ratio sees the same load on the shared machine.
-        copy_ms.push_back(copy.time_ms(output.get()));
-      }
-      for (const std::string& pass : pass_order)
-        r.pass_medians.push_back({pass, median(per_pass[pass].second), median(per_pass[pass].first)});
-      r.frame_ms = median(frame_ms);
-      r.copy_ms = median(copy_ms);
+      const FrameTiming timing = time_frames(*t, gpu, view, output.get(), o.frames, copy);
+      r.pass_medians = timing.pass_medians;
+      r.frame_ms = timing.frame_ms;
+      r.copy_ms = timing.copy_ms;
       if (options.technique == "noaa") noaa_ms = r.frame_ms;
       r.frame_ratio = noaa_ms > 0 ? r.frame_ms / noaa_ms : 1.0;
       r.bytes_per_pixel = t->bytes_per_pixel();

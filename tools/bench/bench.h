@@ -49,6 +49,16 @@ std::vector<std::string> default_scenes();
 
 using Progress = std::function<void(const std::string& what, int done, int total)>;
 
+class CopyPass;
+struct FrameTiming {
+  std::vector<PassTime> pass_medians;  // median over the timed frames, per pass
+  double frame_ms = 0.0;               // median of the frames' summed wall-clock pass times
+  double copy_ms = 0.0;                // median of the copy pass timed after each frame
+};
+// One warm-up frame, then `frames` timed frames of `technique`, each followed by `copy`.
+FrameTiming time_frames(Technique& technique, const GpuScene& scene, const View& view, GLuint output,
+                        int frames, CopyPass& copy);
+
 // Needs a current GL context.
 std::vector<TechniqueResult> run_bench(const BenchOptions& options, const Progress& progress);
 
