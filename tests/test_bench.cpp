@@ -14,6 +14,7 @@
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "core/image_metrics.h"
+#include "core/scene_shading.h"
 
 namespace rsaa {
 namespace {
@@ -175,6 +176,39 @@ TEST(BenchGrowth, TinyRunWritesEveryPoint) {
   bench::plot_growth(r, bench::GrowthAxis::Triangles, dir.file("triangles.png"));
   EXPECT_GT(std::filesystem::file_size(dir.file("pixels.png")), 1000u);
   EXPECT_GT(std::filesystem::file_size(dir.file("triangles.png")), 1000u);
+}
+
+TEST(BenchLights, PointLightsShadeAsTheCpuTwin) {
+  // A grey square facing the camera; the centre pixel sees its centre, view position (0, 0, -5).
+  gl::HeadlessContext context;
+  Scene scene;
+  scene.name = "square";
+  for (const auto& [x, y] : std::vector<std::pair<float, float>>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+    SceneVertex v;
+    v.position = {x, y, 0.0f};
+    v.normal = {0.0f, 0.0f, 1.0f};
+    v.albedo = glm::vec3(0.5f);
+    scene.vertices.push_back(v);
+  }
+  scene.indices = {0, 1, 2, 0, 2, 3};
+  scene.draws = {{0, 6, -1}};
+  Camera camera;  // at (0, 0, 5), looking at the origin
+  scene.camera = camera;
+  const Scene lit = bench::with_lights(scene, camera, 4);
+  ASSERT_EQ(lit.point_lights.size(), 3u);
+  const auto centre = [&](const Scene& s) {
+    const GpuScene gpu(s);
+    return render_frame(gpu, camera, technique_options("noaa"), 33, 33).at(16, 16);
+  };
+  const Rgb one = centre(scene), four = centre(lit);
+  const Rgb cpu_one = shade_surface({0.5f, 0.5f, 0.5f}, {0, 0, 1}, {0, 0, -5}, kSceneSpecularExponent,
+                                    kSceneSpecularScale);
+  const Rgb cpu_four = shade_surface({0.5f, 0.5f, 0.5f}, {0, 0, 1}, {0, 0, -5}, kSceneSpecularExponent,
+                                     kSceneSpecularScale, lit.point_lights);
+  EXPECT_GT(cpu_four.r, cpu_one.r + 0.05f);  // the point lights reach the square
+  for (const auto& [gl_value, cpu_value] : {std::pair{one.r, cpu_one.r}, {one.b, cpu_one.b}, {four.r, cpu_four.r},
+                                            {four.g, cpu_four.g}, {four.b, cpu_four.b}})
+    EXPECT_NEAR(gl_value, cpu_value, 2e-3 * (1.0f + cpu_value));  // RGBA16F
 }
 
 TEST(Bench, CropsShowTheRegionWhereTheFirstImageIsWrong) {

@@ -15,6 +15,7 @@
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "tools/bench/copy_pass.h"
+#include "tools/bench/growth.h"
 
 namespace rsaa::bench {
 namespace {
@@ -113,10 +114,11 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
   const int total = int(o.scenes.size() * (o.techniques.size() + 1));
   int done = 0;
   for (const std::string& spec : o.scenes) {
-    const Scene scene = load_scene_within(spec, 120.0);
+    const Scene loaded = load_scene_within(spec, 120.0);
+    const Camera start = choose_camera(loaded, std::nullopt);
+    const Scene scene = with_lights(loaded, start, o.lights);
     const GpuScene gpu(scene);
     std::vector<Camera> cameras;
-    const Camera start = choose_camera(scene, std::nullopt);
     for (int f = 0; f < o.orbit_frames; ++f) cameras.push_back(orbit_camera(start, f * o.orbit_degrees_per_frame));
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, o.width, o.height);
     CopyPass copy(o.width, o.height);
@@ -207,6 +209,7 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                         {"width", o.width},
                         {"height", o.height},
                         {"timed_frames", o.frames},
+                        {"lights", o.lights},
                         {"orbit_frames", o.orbit_frames},
                         {"orbit_degrees_per_frame", o.orbit_degrees_per_frame},
                         {"reference", "ssaa 64x"},
@@ -271,6 +274,7 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
     o.width = j.at("width");
     o.height = j.at("height");
     o.frames = j.at("timed_frames");
+    o.lights = j.value("lights", 1);
     o.orbit_frames = j.at("orbit_frames");
     std::vector<TechniqueResult> results;
     for (const auto& e : j.at("results")) {
@@ -325,7 +329,8 @@ std::string signed_db(const TechniqueResult* a, const TechniqueResult* b) {
 std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueResult>& results) {
   std::ostringstream s;
   char line[512];
-  s << o.width << "x" << o.height << ", median of " << o.frames << " timed frames after a warm-up, orbit of "
+  s << o.width << "x" << o.height << ", " << o.lights << (o.lights == 1 ? " light" : " lights")
+    << ", median of " << o.frames << " timed frames after a warm-up, orbit of "
     << o.orbit_frames << " frames; * = on the Pareto front (frame-time ratio down, PSNR up)\n\n";
   s << "| scene | technique | PSNR dB | SSIM | luma err % | orbit PSNR | flicker PSNR | frame ms | x noaa | B/px |\n";
   s << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";

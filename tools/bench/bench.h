@@ -19,6 +19,7 @@ struct BenchOptions {
   std::vector<TechniqueOptions> techniques;  // the first must be noaa (the ratio baseline)
   int width = 640, height = 480;
   int frames = 5;        // timed frames per technique (after one warm-up frame)
+  int lights = 1;        // the fixed light plus lights - 1 point lights (growth.h: with_lights)
   int orbit_frames = 4;  // frames of the camera animation for the temporal metrics
   double orbit_degrees_per_frame = 0.25;
   // When set, one side-by-side crop image per scene is written here (crops-<scene>.png).

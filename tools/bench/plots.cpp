@@ -153,13 +153,18 @@ void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::strin
     if (axis == GrowthAxis::Pixels) {
       const auto* p = *std::find_if(points.begin(), points.end(), [&](auto* q) { return q->x() == x; });
       std::snprintf(label, sizeof label, "%dx%d", p->width, p->height);
-    } else {
+    } else if (axis == GrowthAxis::Triangles) {
       std::snprintf(label, sizeof label, "%.0fk", x / 1000.0);
+    } else {
+      std::snprintf(label, sizeof label, "%.0f", x);
     }
     text(canvas, label, {px(x) - 30, height - bottom + 20});
   }
   cv::rectangle(canvas, {left, top}, {width - right, height - bottom}, kInk);
-  text(canvas, axis == GrowthAxis::Pixels ? "image size (pixels, log scale)" : "triangles (log scale)",
+  text(canvas,
+       axis == GrowthAxis::Pixels      ? "image size (pixels, log scale)"
+       : axis == GrowthAxis::Triangles ? "triangles (log scale)"
+                                       : "lights N (log scale): the fixed light + N - 1 point lights",
        {left + 200, height - 15}, 0.5);
   text(canvas, "frame ms (log scale): " + scene_short_name(results.scene), {10, top - 15}, 0.5);
   int legend_y = top + 10;
