@@ -63,6 +63,7 @@ std::vector<TechniqueOptions> default_techniques() {
   list.push_back(technique_options("agaa", 4));
   list.push_back(technique_options("agaa", 8));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
+  for (const TechniqueOptions& o : rsaa_defaults()) list.push_back(o);
   return list;
 }
 

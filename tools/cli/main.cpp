@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   add(rsaa::cli::add_view_command);
   add(rsaa::cli::add_bench_command);
   add(rsaa::cli::add_plot_command);
+  add(rsaa::cli::add_diagnose_command);
 
   try {
     app.parse(argc, argv);
