@@ -10,6 +10,7 @@
 #include "runtime/scene.h"
 #include "tools/bench/bench.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 
 namespace rsaa::cli {
 namespace {
@@ -101,7 +102,8 @@ Action add_bench_command(CLI::App& app) {
       ->check(CLI::Range(2, 1000));
   cmd->add_flag("--quick", args->quick, "CI-scale run: 2 scenes, 160x120, 3 frames, 3 orbit frames");
   cmd->add_option("--out-dir", args->out_dir, "Where bench.json, bench.csv and the plots go")->capture_default_str();
-  cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)");
+  cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)")
+      ->check(finite_range(0.0, 1000.0));
   cmd->add_option("--from-json", args->from_json,
                   "Report and plot a previous run's bench.json again instead of measuring");
   return [args] { return run_bench_command(*args); };
