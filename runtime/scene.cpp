@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -90,7 +91,7 @@ void guard_loader_stack(const std::string& spec, std::vector<char>& alternate_st
   pthread_attr_destroy(&attributes);
   const std::string message = "rsaa: error: '" + spec.substr(0, 400) +
                               "': nested too deeply: the model importer overflowed its " +
-                              std::to_string(kLoaderStackBytes >> 20) + " MiB stack\n";
+                              std::to_string(size >> 20) + " MiB stack\n";
   t_overflow_length = std::min(message.size(), sizeof t_overflow_message);
   std::memcpy(t_overflow_message, message.data(), t_overflow_length);
   t_stack_low = reinterpret_cast<std::uintptr_t>(low);
@@ -125,14 +126,19 @@ void* run_loader(void* argument) {
 Scene load_scene_within(const std::string& spec, double seconds) {
   auto state = std::make_shared<LoadState>();
   state->spec = spec;
-  // pthread, not std::thread: only pthread attributes set the stack size.
-  pthread_attr_t attributes;
-  pthread_attr_init(&attributes);
-  pthread_attr_setstacksize(&attributes, kLoaderStackBytes);
+  // pthread, not std::thread: only pthread attributes set the stack size. Under a tight
+  // address-space limit the full stack may not fit: smaller ones are tried (the fault guard
+  // still names the scene if one overflows).
   auto* argument = new std::shared_ptr<LoadState>(state);
   pthread_t thread;
-  const int error = pthread_create(&thread, &attributes, run_loader, argument);
-  pthread_attr_destroy(&attributes);
+  int error = EAGAIN;
+  for (std::size_t stack = kLoaderStackBytes; error != 0 && stack >= (std::size_t{16} << 20); stack /= 4) {
+    pthread_attr_t attributes;
+    pthread_attr_init(&attributes);
+    pthread_attr_setstacksize(&attributes, stack);
+    error = pthread_create(&thread, &attributes, run_loader, argument);
+    pthread_attr_destroy(&attributes);
+  }
   if (error != 0) {
     delete argument;
     throw std::runtime_error("'" + spec + "': cannot start the loader thread (" +
@@ -157,13 +163,13 @@ void check_frameable(const Scene& scene, const std::string& what) {
   }
   char text[160];
   if (!(largest <= kMaxSceneCoordinate)) {
-    std::snprintf(text, sizeof text, "coordinates reach %g; a float camera frames at most %g", largest,
+    std::snprintf(text, sizeof text, "coordinates reach %g; models render correctly up to %g", largest,
                   kMaxSceneCoordinate);
   } else if (!(extent >= kMinSceneExtent)) {
-    std::snprintf(text, sizeof text, "extent %g is below %g, too small to frame in float", extent,
+    std::snprintf(text, sizeof text, "extent %g is below %g, too small to render correctly in float", extent,
                   kMinSceneExtent);
   } else if (extent < largest * kMinExtentToPosition) {
-    std::snprintf(text, sizeof text, "extent %g at %g from the origin spans too few float steps (at least %g of the distance)",
+    std::snprintf(text, sizeof text, "extent %g at %g from the origin spans too few float steps (needs at least %g of the distance)",
                   extent, largest, kMinExtentToPosition);
   } else {
     return;

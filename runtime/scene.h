@@ -58,11 +58,13 @@ constexpr std::uint64_t kMaxModelFileBytes = std::uint64_t{256} << 20;
 constexpr std::uint64_t kMaxSceneVertices = std::uint64_t{1} << 24;
 constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{1} << 25;
 constexpr std::uint64_t kMaxSceneTexels = std::uint64_t{1} << 26;
-// Coordinates a float camera and float normals can frame: squares of lengths must neither
-// overflow nor underflow, and the extent must span enough float steps of its position.
-constexpr double kMaxSceneCoordinate = 1e12;
-constexpr double kMinSceneExtent = 1e-12;
-constexpr double kMinExtentToPosition = 1e-5;
+// Coordinates a model may have and still render as it would at unit scale (measured with a
+// tetrahedron framed automatically: equal images from scale 1e-5 to 3e9; scale 1e-6 and 1e10
+// differ, 1e30 showed only the background; offset from the origin by 1e4 times its size it
+// is within 63 dB, by 3e4 times only 43 dB).
+constexpr double kMaxSceneCoordinate = 1e9;
+constexpr double kMinSceneExtent = 1e-5;
+constexpr double kMinExtentToPosition = 1e-4;
 // Throws std::runtime_error starting with `what` when the scene's bounds are outside these.
 void check_frameable(const Scene& scene, const std::string& what);
 

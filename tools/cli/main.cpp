@@ -1,4 +1,6 @@
 // rsaa: one executable, one subcommand per job (DESIGN.md section 4).
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -76,8 +78,12 @@ int main(int argc, char** argv) {
   try {
     return actions.at(chosen)();
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "rsaa %s: error: out of memory (an input declares more data than fits in "
-                 "the memory available)\n", chosen->get_name().c_str());
+    rlimit limit{};
+    const bool capped = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+    std::fprintf(stderr, "rsaa %s: error: out of memory (%s)\n", chosen->get_name().c_str(),
+                 capped ? ("address space limited to " + std::to_string(limit.rlim_cur >> 20) +
+                           " MiB; fewer --threads or a smaller input may fit").c_str()
+                        : "an input declares more data than fits in the memory available");
     std::fflush(nullptr);
     std::_Exit(1);
   } catch (const std::exception& e) {
