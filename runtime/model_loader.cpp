@@ -1,5 +1,7 @@
 // Models through assimp: triangles only, transforms baked in, smooth normals generated where
 // missing, diffuse/base colour and its texture per material.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -53,6 +55,11 @@ class BoundedIOSystem : public Assimp::DefaultIOSystem {
       return nullptr;  // missing: assimp decides whether that matters
     }
     return DefaultIOSystem::Open(file, mode);
+  }
+  // DefaultIOSystem::Exists opens the file with fopen, which waits forever on a FIFO.
+  bool Exists(const char* file) const override {
+    struct stat st {};
+    return ::stat(file, &st) == 0;
   }
   std::string refusal;
 };
@@ -181,8 +188,10 @@ Scene load_model(const std::string& path) {
     throw std::runtime_error(what + ": out of memory while importing (the sizes it declares do "
                              "not fit in the memory available)");
   }
-  if (!ai || !ai->mRootNode)
-    throw std::runtime_error(what + ": " + (io->refusal.empty() ? importer.GetErrorString() : io->refusal));
+  // A file the model refers to that was refused (a FIFO, a device, over the budget) refuses
+  // the model too, even when the importer would go on without it.
+  if (!io->refusal.empty()) throw std::runtime_error(what + ": " + io->refusal);
+  if (!ai || !ai->mRootNode) throw std::runtime_error(what + ": " + importer.GetErrorString());
 
   // The copy below allocates per vertex and index: counted first, against the budget.
   std::uint64_t vertex_total = 0, face_total = 0;

@@ -22,6 +22,9 @@ inline const CLI::Validator kWholeNumber(
       for (char c : text)
         if (!std::isdigit(static_cast<unsigned char>(c)))
           return "expected a whole number (digits only), got '" + text + "'";
+      // CLI11 would clamp a larger one to the largest 64-bit value.
+      if (text.size() == 20 && text > "18446744073709551615")
+        return "'" + text + "' is larger than 18446744073709551615";
       return "";
     },
     "WHOLE NUMBER");
