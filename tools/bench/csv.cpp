@@ -59,6 +59,12 @@ CsvTable read_csv(const std::string& path) {
   return table;
 }
 
+std::string csv_text(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
 double csv_number(const CsvTable& table, const std::string& path, std::size_t row, std::size_t column) {
   const std::string& cell = table.rows.at(row).at(column);
   char* end = nullptr;

@@ -20,6 +20,9 @@ constexpr unsigned long long kMaxCsvBytes = 64ull << 20;
 // (blank lines) are skipped.
 CsvTable read_csv(const std::string& path);
 
+// A text cell as written: in quotes, with quotes doubled (RFC 4180).
+std::string csv_text(const std::string& text);
+
 // The cell as a finite number; throws naming the file, record and column otherwise.
 double csv_number(const CsvTable& table, const std::string& path, std::size_t row, std::size_t column);
 

@@ -197,6 +197,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
     auto out = OIIO::ImageOutput::create(f("ga.png"));
     OIIO::ImageSpec spec(4, 4, 2, OIIO::TypeDesc::UINT8);
     spec.alpha_channel = 1;
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     std::vector<std::uint8_t> ga(32);
     for (std::size_t i = 0; i < ga.size(); i += 2) ga[i] = 255, ga[i + 1] = 128;
     out->open(f("ga.png"), spec);
