@@ -13,6 +13,7 @@ packages=(
   libglm-dev libopenimageio-dev openimageio-tools
   libglfw3-dev libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libassimp-dev assimp-testmodels
+  libcsv-dev                            # rsaa plot: CSV with quoted fields
   xvfb xauth
 )
 

@@ -1,4 +1,5 @@
 #include "tools/bench/bench.h"
+#include "tools/bench/csv.h"
 
 #include <algorithm>
 #include <cmath>
@@ -254,15 +255,16 @@ std::string results_csv(const std::vector<TechniqueResult>& results) {
   s << "scene,technique,frame_ms,frame_ratio_to_noaa,psnr_db,ssim,luma_error_share_percent,"
        "orbit_psnr_db,flicker_psnr_db,bytes_per_pixel,pareto,passes_wall_ms,copy_ms,passes_copy_multiple\n";
   for (const TechniqueResult& r : results) {
-    s << '"' << r.scene << "\",\"" << r.label << "\"," << r.frame_ms << ',' << r.frame_ratio << ','
+    s << csv_text(r.scene) << ',' << csv_text(r.label) << ',' << r.frame_ms << ',' << r.frame_ratio << ','
       << r.psnr_db << ',' << r.ssim << ',' << r.luma_error_share << ',' << r.orbit_psnr_db << ','
-      << r.flicker_psnr_db << ',' << r.bytes_per_pixel << ',' << (r.pareto ? 1 : 0) << ",\"";
+      << r.flicker_psnr_db << ',' << r.bytes_per_pixel << ',' << (r.pareto ? 1 : 0) << ',';
+    std::ostringstream passes;
     for (std::size_t i = 0; i < r.pass_medians.size(); ++i)
-      s << (i ? ";" : "") << r.pass_medians[i].pass << '=' << r.pass_medians[i].wall_milliseconds;
-    s << "\"," << r.copy_ms << ",\"";
+      passes << (i ? ";" : "") << r.pass_medians[i].pass << '=' << r.pass_medians[i].wall_milliseconds;
+    std::ostringstream multiples;
     for (std::size_t i = 0; i < r.pass_medians.size(); ++i)
-      s << (i ? ";" : "") << r.pass_medians[i].pass << '=' << copy_multiple(r, r.pass_medians[i]);
-    s << "\"\n";
+      multiples << (i ? ";" : "") << r.pass_medians[i].pass << '=' << copy_multiple(r, r.pass_medians[i]);
+    s << csv_text(passes.str()) << ',' << r.copy_ms << ',' << csv_text(multiples.str()) << '\n';
   }
   return s.str();
 }

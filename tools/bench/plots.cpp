@@ -233,49 +233,29 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
 
 }  // namespace rsaa::bench
 
-#include <fstream>
-#include <sstream>
+#include "tools/bench/csv.h"
 
 namespace rsaa::bench {
 
 void plot_csv(const std::string& csv_path, const std::string& x_column, const std::vector<std::string>& y_columns,
               bool log_x, const std::string& title, const std::string& png_path) {
-  std::ifstream in(csv_path);
-  if (!in) throw std::runtime_error(csv_path + ": cannot open");
-  std::string line;
-  std::vector<std::string> header;
-  if (!std::getline(in, line)) throw std::runtime_error(csv_path + ": empty");
-  {
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) header.push_back(cell);
-  }
+  // Quoted text columns (the bench's own CSV) are fine; the columns drawn must be numbers.
+  const CsvTable table = read_csv(csv_path);
   const auto column = [&](const std::string& name) {
-    const auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end()) throw std::runtime_error(csv_path + ": no column '" + name + "'");
-    return std::size_t(it - header.begin());
+    const auto it = std::find(table.header.begin(), table.header.end(), name);
+    if (it == table.header.end()) throw std::runtime_error(csv_path + ": no column '" + name + "'");
+    return std::size_t(it - table.header.begin());
   };
   const std::size_t xc = column(x_column);
   std::vector<std::size_t> ycs;
   for (const auto& y : y_columns) ycs.push_back(column(y));
   std::vector<double> xs;
   std::vector<std::vector<double>> ys(ycs.size());
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.empty()) continue;
-    std::vector<double> values;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) {
-      try {
-        values.push_back(std::stod(cell));
-      } catch (const std::exception&) {
-        throw std::runtime_error(csv_path + ": row " + std::to_string(row) + ": '" + cell + "' is not a number");
-      }
-    }
-    if (values.size() != header.size()) throw std::runtime_error(csv_path + ": row " + std::to_string(row) + " has " + std::to_string(values.size()) + " cells");
-    if (log_x && !(values[xc] > 0)) throw std::runtime_error(csv_path + ": log x needs positive values");
-    xs.push_back(log_x ? std::log10(values[xc]) : values[xc]);
-    for (std::size_t k = 0; k < ycs.size(); ++k) ys[k].push_back(values[ycs[k]]);
+  for (std::size_t row = 0; row < table.rows.size(); ++row) {
+    const double x = csv_number(table, csv_path, row, xc);
+    if (log_x && !(x > 0)) throw std::runtime_error(csv_path + ": log x needs positive values");
+    xs.push_back(log_x ? std::log10(x) : x);
+    for (std::size_t k = 0; k < ycs.size(); ++k) ys[k].push_back(csv_number(table, csv_path, row, ycs[k]));
   }
   if (xs.size() < 2) throw std::runtime_error(csv_path + ": needs at least two rows");
   double x_lo = *std::min_element(xs.begin(), xs.end()), x_hi = *std::max_element(xs.begin(), xs.end());

@@ -11,6 +11,7 @@
 #include "tools/bench/bench.h"
 #include "tools/bench/growth.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 
 namespace rsaa::cli {
 namespace {
@@ -163,7 +164,8 @@ Action add_bench_command(CLI::App& app) {
       ->check(CLI::Range(2, 1000));
   cmd->add_flag("--quick", args->quick, "CI-scale run: 2 scenes, 160x120, 3 frames, 3 orbit frames");
   cmd->add_option("--out-dir", args->out_dir, "Where bench.json, bench.csv and the plots go")->capture_default_str();
-  cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)");
+  cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)")
+      ->check(finite_range(0.0, 1000.0));
   cmd->add_flag("--growth", args->growth,
                 "Instead: frame time of every technique against image size (640x480 to 2560x1440), "
                 "triangle count (the scene subdivided 1x, 4x, 16x) and light count (--lights, default "
