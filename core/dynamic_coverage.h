@@ -1,9 +1,13 @@
 // CPU reference of Bertolami's dynamic coverage anti-aliasing (seed 002): per pixel two colours,
-// two depths and two 16-bit coverage masks (40 B in the seed's units, against 72 B for 4x MSAA);
-// each fragment either evicts the farther slot or is dropped; the resolve weights the nearer
-// slot by its whole mask and the farther one by the samples the nearer does not cover.
+// two depths and two 16-bit coverage masks (40 B in the seed's units, against 72 B for 4x MSAA),
+// updated once per fragment in primitive order, then resolved by coverage.
 //
-// The seed leaves some cases open; the choices (tested in tests/test_coverage_techniques.cpp):
+// Two rule sets (`dyncov --rules seed|surface`, the GL resolve implements both):
+//
+// Seed: the seed's update and resolve as written. Slots start as the clear colour at DEPTH_MAX
+// with full masks; a fragment closer than either slot evicts the farther one (slot 0 on a tie);
+// the resolve weights the nearer slot by its whole mask and the farther by the samples the
+// nearer does not cover, divided by the samples either covers (TCC). What the seed leaves open:
 //  - A fragment that covers no coverage sample (a partial overlap between samples, a thin
 //    triangle) is ignored, as hardware coverage would: it never evicts a slot.
 //  - Depth ties: "closer" is strict, so an equal-depth fragment is dropped when both slots are
@@ -15,30 +19,75 @@
 //  - Samples neither mask covers do not show the background: the seed divides by TCC.
 //  - Many overlaps with equal coverage: the last two closer-than-a-slot fragments win, in
 //    primitive order.
+// On tessellated models these rules lose against no AA: a pixel touched by three triangles keeps
+// the last two closer ones (often two triangles of one surface), the background slot is evicted
+// and the division by TCC stretches the two over samples they do not cover.
+//
+// Surface (the default): the same storage plus, per slot, a facet normal and the depth slopes
+// (2 x 16-bit normal, 2 x 16-bit slopes: 8 B a slot, 56 B a pixel in the seed's units), and
+// these answers to the seed's open questions:
+//  - Slots start empty and samples no slot covers show the clear colour: the background is an
+//    implicit third surface that never needs a slot.
+//  - One surface, one slot: a fragment whose normal is within pi/16 of a slot's and whose depth
+//    interval over the pixel overlaps the slot's (DCAA's test: a continuous depth plane and
+//    normal) is merged into it (masks ORed; colour, depth plane and normal averaged weighted by
+//    coverage). A tessellated surface fills one slot instead of both, and "many overlaps with
+//    equal coverage" of one surface add up instead of replacing each other.
+//  - Otherwise it takes an empty slot.
+//  - Both slots full: of the two slots and the fragment, ordered front to back by depth at the
+//    pixel centre, the one with the fewest samples left visible by the closer ones (ties: the
+//    farther; never the front-most) is the one that contributes least; it is merged into the
+//    slot whose depth interval overlaps it most (a crease of one surface, a thin triangle
+//    between two others) or dropped when none does. A hidden fragment drawn first is thus
+//    replaced by the visible ones, without a z-prepass.
+//  - Zero coverage and non-finite input are ignored as in the seed rules; a fragment between the
+//    samples contributes nothing (its area is below the 1/16 the samples resolve).
+// These are DCAA's Algorithm 1 rules (core/dcaa.h) with 2 surfaces and 16 samples; the resolve
+// stays the seed's (nearer slot's whole mask, then the farther's samples not under it), with
+// the background on the samples neither covers.
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "core/coverage_fragment.h"
+#include "core/dcaa.h"
 
 namespace rsaa {
 
+enum class DynamicCoverageRules { Seed, Surface };
+
+// "seed" | "surface"; throws std::invalid_argument otherwise.
+DynamicCoverageRules dynamic_coverage_rules(const std::string& name);
+
 class DynamicCoveragePixel {
  public:
-  // At the start of a frame: masks 0xFFFF, colours the clear colour, depths DEPTH_MAX (1).
-  explicit DynamicCoveragePixel(Rgb clear);
+  static constexpr int kSamples = 16;
 
-  // The seed's update with IC = colour, ID = depth at the pixel centre, IM = the fragment's 16
-  // coverage bits. Returns false when the fragment was ignored or dropped.
+  // Seed rules: masks 0xFFFF, colours the clear colour, depths DEPTH_MAX (1). Surface rules:
+  // no slot in use.
+  DynamicCoveragePixel(Rgb clear, DynamicCoverageRules rules);
+
+  // One fragment: IC = colour, ID = depth at the pixel centre, IM = its 16 coverage bits.
+  // Returns false when the fragment was ignored or dropped (seed rules) or ignored (surface).
   bool insert(const CoverageFragment& fragment);
   Rgb resolve() const;
 
+  // The seed rules' slots.
   Rgb colour[2];
   float depth[2];
   std::uint16_t mask[2];
+  // The surface rules' slots (at most 2).
+  const std::vector<DcaaSurface>& surfaces() const { return surfaces_.surfaces(); }
+
+ private:
+  DynamicCoverageRules rules_;
+  Rgb clear_;
+  DcaaPixel surfaces_;
 };
 
 constexpr double kDynamicCoveragePaperBytesPerPixel = 40.0;     // 2 x (16 B colour + 2 B depth + 2 B mask)
+constexpr double kDynamicCoverageSurfaceBytesPerPixel = 56.0;   // + 2 x (4 B normal + 4 B depth slopes)
 constexpr double kDynamicCoveragePaperMsaaBytesPerPixel = 72.0;  // 4x MSAA in the same units
 
 }  // namespace rsaa

@@ -21,6 +21,7 @@ struct TechniqueOptions {
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.1;               // agaa: characteristic length of eq. 1, scene units
+  std::string rules = "surface";     // dyncov: surface | seed (core/dynamic_coverage.h)
 };
 
 // Options for a technique by name and sample count (0: its default), other fields defaulted.

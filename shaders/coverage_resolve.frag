@@ -2,7 +2,9 @@
 // (what fragment-shader interlock gives the papers) through the technique's per-pixel update,
 // then resolves. The rules are those of the CPU references, which the tests compare against:
 //   COVERAGE_DCAA    core/dcaa.cpp (Algorithm 1 merge/discard, per-sample depth resolve)
-//   COVERAGE_DYNCOV  core/dynamic_coverage.cpp (two slots, evict the farther)
+//   COVERAGE_DYNCOV_SEED     core/dynamic_coverage.cpp, seed rules (two slots, evict the farther)
+//   COVERAGE_DYNCOV_SURFACE  core/dynamic_coverage.cpp, surface rules: DCAA's update with 2 slots,
+//                            the seed's resolve with the background on uncovered samples
 #include "coverage_record.glsl"
 
 layout(r32ui) uniform readonly uimage2D u_heads;
@@ -11,11 +13,13 @@ out vec4 o_colour;
 
 const int SORT_SLOTS = 32;  // lists up to this length are sorted locally; longer ones are scanned
 
-#ifdef COVERAGE_DCAA
+#if defined(COVERAGE_DCAA) || defined(COVERAGE_DYNCOV_SURFACE)
 uniform float u_cos_normal_threshold;
-uniform int u_coverage_sample_count;
-uniform vec2 u_coverage_samples[64];  // pixel space, y down
+#ifdef COVERAGE_DCAA
 const int MAX_SURFACES = 4;
+#else
+const int MAX_SURFACES = 2;
+#endif
 
 uvec2 s_coverage[MAX_SURFACES + 1];
 vec3 s_depth[MAX_SURFACES + 1];
@@ -112,6 +116,11 @@ void insert_fragment(CoverageRecord r) {
   if (target >= 0) merge_into(target, smallest);
   for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
 }
+#endif  // COVERAGE_DCAA || COVERAGE_DYNCOV_SURFACE
+
+#ifdef COVERAGE_DCAA
+uniform int u_coverage_sample_count;
+uniform vec2 u_coverage_samples[64];  // pixel space, y down
 
 vec3 resolve_pixel() {
   int counts[MAX_SURFACES] = int[MAX_SURFACES](0, 0, 0, 0);
@@ -141,7 +150,20 @@ vec3 resolve_pixel() {
 }
 #endif  // COVERAGE_DCAA
 
-#ifdef COVERAGE_DYNCOV
+#ifdef COVERAGE_DYNCOV_SURFACE
+// The seed's resolve over the (at most 2) surfaces; samples neither covers show the background.
+vec3 resolve_pixel() {
+  if (s_count == 0) return u_background;
+  int near = s_count == 2 && s_depth[1].x < s_depth[0].x ? 1 : 0;
+  uint near_mask = s_coverage[near].x, far_mask = s_count == 2 ? s_coverage[1 - near].x & ~near_mask : 0u;
+  const float n = 16.0;
+  vec3 c = float(bitCount(near_mask)) / n * s_colour[near] + (n - float(bitCount(near_mask | far_mask))) / n * u_background;
+  if (far_mask != 0u) c += float(bitCount(far_mask)) / n * s_colour[1 - near];
+  return c;
+}
+#endif  // COVERAGE_DYNCOV_SURFACE
+
+#ifdef COVERAGE_DYNCOV_SEED
 vec3 slot_colour[2];
 float slot_depth[2];
 uint slot_mask[2];
@@ -164,10 +186,10 @@ vec3 resolve_pixel() {
   return (float(bitCount(slot_mask[near])) * slot_colour[near] +
           float(bitCount(slot_mask[far] & ~slot_mask[near])) * slot_colour[far]) / total;
 }
-#endif  // COVERAGE_DYNCOV
+#endif  // COVERAGE_DYNCOV_SEED
 
 void main() {
-#ifdef COVERAGE_DYNCOV
+#ifdef COVERAGE_DYNCOV_SEED
   slot_colour[0] = slot_colour[1] = u_background;
   slot_depth[0] = slot_depth[1] = 1.0;
   slot_mask[0] = slot_mask[1] = 0xffffu;

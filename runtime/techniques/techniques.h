@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/agaa.h"
+#include "core/dynamic_coverage.h"
 #include "core/vec2.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/gl_context.h"
@@ -19,7 +20,7 @@ std::unique_ptr<Technique> make_fxaa(int width, int height);
 std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height);
 // Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
 std::unique_ptr<Technique> make_dcaa(int width, int height);
-std::unique_ptr<Technique> make_dynamic_coverage(int width, int height);
+std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, int width, int height);
 // AGAA with 2 aggregates over `samples` (4: hardware MSAA, 8: jittered) visibility samples.
 std::unique_ptr<Technique> make_agaa(int samples, float k, int width, int height);
 

@@ -13,7 +13,7 @@ constexpr double kSceneLoadSeconds = 120.0;
 inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
   cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | ssaa-filtered | rsaa | dcaa | dyncov | agaa")->capture_default_str();
   cmd->add_option("--samples", o.samples,
-                  "msaa: 4 (hardware) | 8 (jittered); ssaa: 16 | 64; rsaa: 4 | 8 (default 8); agaa: 4 (hardware) | 8 "
+                  "msaa: 4 (hardware); ssaa: 8 (d3d8x) | 16 | 64; rsaa: 4 | 8 (default 8); agaa: 4 (hardware) | 8 "
                   "(jittered, default)");
   cmd->add_option("--similarity", o.similarity, "rsaa: sadp | depth")->capture_default_str();
   cmd->add_option("--auth", o.auth, "rsaa authentication: 0 none, 1 post-pass, 2 pre-pass")
@@ -29,6 +29,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
       ->capture_default_str();
   cmd->add_option("--agaa-k", o.agaa_k,
                   "agaa: characteristic length of the clustering distance, scene units (the paper: 10 cm)")
+      ->capture_default_str();
+  cmd->add_option("--rules", o.rules,
+                  "dyncov: surface (merge fragments of one surface, background on uncovered samples) | seed "
+                  "(the seed's rules as written)")
       ->capture_default_str();
 }
 
