@@ -13,6 +13,19 @@ Rgb operator+(Rgb a, Rgb b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
 
 }  // namespace
 
+DcaaSettings dynamic_coverage_surface_settings() {
+  DcaaSettings s;
+  s.max_surfaces = 2;
+  s.per_sample_visibility = true;
+  s.merge_hidden = false;
+  return s;
+}
+
+const SamplePattern& dynamic_coverage_pattern() {
+  static const SamplePattern pattern = builtin_pattern("d3d16x");
+  return pattern;
+}
+
 DynamicCoverageRules dynamic_coverage_rules(const std::string& name) {
   if (name == "seed") return DynamicCoverageRules::Seed;
   if (name == "surface") return DynamicCoverageRules::Surface;
@@ -25,7 +38,7 @@ DynamicCoveragePixel::DynamicCoveragePixel(Rgb clear, DynamicCoverageRules rules
       mask{0xFFFF, 0xFFFF},
       rules_(rules),
       clear_(clear),
-      surfaces_(DcaaSettings{2, DcaaSettings{}.cos_normal_threshold}) {}
+      surfaces_(dynamic_coverage_surface_settings(), &dynamic_coverage_pattern()) {}
 
 bool DynamicCoveragePixel::insert(const CoverageFragment& f) {
   const std::uint16_t incoming = std::uint16_t(f.coverage & 0xFFFF);
@@ -45,17 +58,7 @@ bool DynamicCoveragePixel::insert(const CoverageFragment& f) {
 }
 
 Rgb DynamicCoveragePixel::resolve() const {
-  if (rules_ == DynamicCoverageRules::Surface) {
-    const auto& s = surfaces_.surfaces();
-    if (s.empty()) return clear_;
-    // The nearer slot by depth at the centre (ties: the earlier), as the seed's resolve orders them.
-    const int near = s.size() == 2 && s[1].depth.at_centre < s[0].depth.at_centre ? 1 : 0;
-    const Mask near_mask = s[near].coverage, far_mask = s.size() == 2 ? s[1 - near].coverage & ~near_mask : 0;
-    const float n = float(kSamples);
-    Rgb c = weighted(s[near].colour, bits(near_mask) / n) + weighted(clear_, (n - bits(near_mask | far_mask)) / n);
-    if (far_mask) c = c + weighted(s[1 - near].colour, bits(far_mask) / n);
-    return c;
-  }
+  if (rules_ == DynamicCoverageRules::Surface) return surfaces_.resolve(dynamic_coverage_pattern(), clear_);
   const int near = depth[0] < depth[1] ? 0 : 1, far = 1 - near;
   const float total = bits(Mask(mask[0] | mask[1]));
   if (total == 0.0f) return colour[near];

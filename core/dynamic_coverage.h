@@ -23,28 +23,34 @@
 // the last two closer ones (often two triangles of one surface), the background slot is evicted
 // and the division by TCC stretches the two over samples they do not cover.
 //
-// Surface (the default): the same storage plus, per slot, a facet normal and the depth slopes
-// (2 x 16-bit normal, 2 x 16-bit slopes: 8 B a slot, 56 B a pixel in the seed's units), and
-// these answers to the seed's open questions:
-//  - Slots start empty and samples no slot covers show the clear colour: the background is an
-//    implicit third surface that never needs a slot.
-//  - One surface, one slot: a fragment whose normal is within pi/16 of a slot's and whose depth
-//    interval over the pixel overlaps the slot's (DCAA's test: a continuous depth plane and
-//    normal) is merged into it (masks ORed; colour, depth plane and normal averaged weighted by
-//    coverage). A tessellated surface fills one slot instead of both, and "many overlaps with
-//    equal coverage" of one surface add up instead of replacing each other.
-//  - Otherwise it takes an empty slot.
-//  - Both slots full: of the two slots and the fragment, ordered front to back by depth at the
-//    pixel centre, the one with the fewest samples left visible by the closer ones (ties: the
-//    farther; never the front-most) is the one that contributes least; it is merged into the
-//    slot whose depth interval overlaps it most (a crease of one surface, a thin triangle
-//    between two others) or dropped when none does. A hidden fragment drawn first is thus
-//    replaced by the visible ones, without a z-prepass.
-//  - Zero coverage and non-finite input are ignored as in the seed rules; a fragment between the
-//    samples contributes nothing (its area is below the 1/16 the samples resolve).
-// These are DCAA's Algorithm 1 rules (core/dcaa.h) with 2 surfaces and 16 samples; the resolve
-// stays the seed's (nearer slot's whole mask, then the farther's samples not under it), with
-// the background on the samples neither covers.
+// Surface (the default, `--rules surface`): the same two slots, each also keeping its facet
+// normal and depth slopes (+8 B a slot: 2 x 16-bit normal, 2 x 16-bit slopes; 56 B a pixel in
+// the seed's units), and these answers to the seed's open questions, each measured on the bench
+// (README, "Coverage-based techniques"):
+//  1. Slots start empty; samples no slot covers show the clear colour. The background is an
+//     implicit surface that never needs a slot (the seed's full-mask background slot is evicted
+//     by the second fragment, then the division by TCC hides it).
+//  2. One surface, one slot: a fragment whose normal is within pi/16 of a slot's and whose depth
+//     interval over the pixel overlaps it (DCAA's test: a continuous depth plane and normal) is
+//     merged into it (masks ORed; colour, depth plane and normal averaged by coverage). A
+//     tessellated surface fills one slot instead of both; "many overlaps with equal coverage"
+//     of one surface add up instead of replacing each other.
+//  3. Otherwise it takes an empty slot.
+//  4. Both slots full: of the two slots and the fragment, the one showing the fewest of the 16
+//     samples when each sample takes the nearest depth plane covering it (ties: the farther at
+//     the centre) contributes least. It is merged into the slot whose depth interval overlaps
+//     it most (a crease or a thin triangle between two facets of one object), or dropped when
+//     none overlaps or when it shows no sample at all (a hidden fragment never blends into a
+//     visible one; no z-prepass is needed for a hidden fragment drawn first to give way).
+//  5. Resolve: each of the 16 samples takes the nearest slot covering it by its depth plane,
+//     uncovered samples the background: C = sum n_i c_i / 16 + (16 - sum n_i) / 16 background.
+//     (The seed orders the two slots by one depth each; a fin extrapolated to the pixel centre
+//     lies behind the surface it stands on, and the surface wins samples the fin covers.)
+//  6. A fragment covering no sample (a partial overlap between samples, a thin triangle below
+//     the sampling) and non-finite input are ignored as in the seed rules.
+// Rules 2-5 are DCAA's Algorithm 1 (core/dcaa.h) with 2 surfaces over 16 samples, its second
+// merge counting visibility per sample and dropping hidden surfaces; the GL resolve is DCAA's
+// with those settings (dynamic_coverage_surface_settings()).
 #pragma once
 
 #include <cstdint>
@@ -56,6 +62,11 @@
 namespace rsaa {
 
 enum class DynamicCoverageRules { Seed, Surface };
+
+// The surface rules as DCAA settings (what the GL resolve is given too).
+DcaaSettings dynamic_coverage_surface_settings();
+// The 16 coverage samples (the d3d16x positions).
+const SamplePattern& dynamic_coverage_pattern();
 
 // "seed" | "surface"; throws std::invalid_argument otherwise.
 DynamicCoverageRules dynamic_coverage_rules(const std::string& name);

@@ -298,13 +298,13 @@ TEST(DynamicCoverageSurface, DifferentSurfacesTakeTheEmptySlotsThenTheLeastVisib
   EXPECT_FLOAT_EQ(p.resolve().b, 0.0f);
   EXPECT_FLOAT_EQ(p.resolve().r, 0.5f);
   EXPECT_FLOAT_EQ(p.resolve().g, 6.0f / 16.0f);
-  // A one-sample fragment in front of both: the front-most is never the one to go; the back
-  // surface (5 samples left visible, against the red one's 8) goes, its samples show background.
+  // A one-sample fragment in front of both: counted per sample it shows 1 sample against the
+  // back surface's 5, so it is the one that goes (DCAA's coarse rule never drops the front-most).
   EXPECT_TRUE(p.insert(fragment(3, 0x0100, 0.1f, 2.0f, {0, 0, 1})));
   ASSERT_EQ(p.surfaces().size(), 2u);
-  EXPECT_FLOAT_EQ(p.resolve().b, 1.0f / 16.0f);
+  EXPECT_FLOAT_EQ(p.resolve().b, 0.0f);
   EXPECT_FLOAT_EQ(p.resolve().r, 0.5f);
-  EXPECT_FLOAT_EQ(p.resolve().g, 0.0f);
+  EXPECT_FLOAT_EQ(p.resolve().g, 6.0f / 16.0f);
 }
 
 TEST(DynamicCoverageSurface, AHiddenFragmentDrawnFirstGivesWayAndACreaseMergesIntoItsNeighbour) {
@@ -354,6 +354,45 @@ TEST(WorkedExample, DynamicCoverageSurfaceRulesKeepTheBackground) {
   EXPECT_NEAR(c.r, (8 * kPurpleColour.r + 5 * kGreenColour.r + 3 * kWhite.r) / 16, 1e-3);
   EXPECT_NEAR(c.g, (8 * kPurpleColour.g + 5 * kGreenColour.g + 3 * kWhite.g) / 16, 1e-3);
   EXPECT_NEAR(c.b, (8 * kPurpleColour.b + 5 * kGreenColour.b + 3 * kWhite.b) / 16, 1e-3);
+}
+
+
+TEST(DynamicCoverageSurface, APlaneCrossingAnotherWinsTheSamplesWhereItIsInFront) {
+  // A fin on a body: the body at depth 0.5 covers all 16 samples; the fin's plane is in front on
+  // the left (x < -1/6) and, extrapolated to the centre, behind (0.55). It covers the samples
+  // left of x = -0.2. Per sample the fin shows on all of them; the seed orders the two slots by
+  // their depth at the centre and gives every sample to the body.
+  const SamplePattern& pattern = dynamic_coverage_pattern();
+  Mask left = 0;
+  for (int s = 0; s < pattern.size(); ++s)
+    if (pattern.positions[s].x < -0.2) left |= Mask(1) << s;
+  ASSERT_GT(similar_count(left), 0);
+  const CoverageFragment body = fragment(0, 0xFFFF, 0.5f, 0.0f, {1, 0, 0});
+  const CoverageFragment fin = fragment(1, left, 0.55f, 1.2f, {0, 1, 0}, 0.3f);
+  DynamicCoveragePixel surface({0, 0, 0}, DynamicCoverageRules::Surface), seed({0, 0, 0}, DynamicCoverageRules::Seed);
+  for (const CoverageFragment& f : {body, fin}) surface.insert(f), seed.insert(f);
+  EXPECT_FLOAT_EQ(surface.resolve().g, float(similar_count(left)) / 16.0f);
+  EXPECT_FLOAT_EQ(seed.resolve().g, 0.0f);
+}
+
+TEST(DynamicCoverageSurface, AHiddenSurfaceIsDroppedNotBlendedIntoAVisibleOne) {
+  // Both slots full with visible surfaces; a third one, behind the front slot everywhere it
+  // covers but overlapping its depth interval (the far side of a thin fin), shows no sample.
+  // DCAA's paper rule merges it into the front slot (its colour bleeds in); the surface rules
+  // drop it.
+  const auto run = [](DcaaSettings settings) {
+    DcaaPixel p(settings, &dynamic_coverage_pattern());
+    p.insert(fragment(0, 0x00FF, 0.50f, 0.0f, {1, 0, 0}, 0.02f));
+    p.insert(fragment(1, 0xFF00, 0.80f, 1.0f, {0, 1, 0}));
+    p.insert(fragment(2, 0x000F, 0.51f, kPi, {0, 0, 1}, 0.02f));  // facing away, 0.01 behind
+    return p.resolve(dynamic_coverage_pattern(), {0, 0, 0});
+  };
+  DcaaSettings paper;
+  paper.max_surfaces = 2;
+  EXPECT_GT(run(paper).b, 0.0f);
+  EXPECT_FLOAT_EQ(run(dynamic_coverage_surface_settings()).b, 0.0f);
+  EXPECT_FLOAT_EQ(run(dynamic_coverage_surface_settings()).r, 0.5f);
+  EXPECT_THROW(DcaaPixel{dynamic_coverage_surface_settings()}, std::invalid_argument);  // needs the samples
 }
 
 }  // namespace

@@ -21,6 +21,9 @@ std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height)
 // Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
 std::unique_ptr<Technique> make_dcaa(int width, int height);
 std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, int width, int height);
+// Sets the uniforms of coverage_resolve.frag's COVERAGE_DCAA variant: coverage samples and the
+// DcaaSettings (dcaa, and dyncov's surface rules).
+void configure_surface_resolve(GLuint program, const SamplePattern& pattern, const DcaaSettings& settings);
 // AGAA with 2 aggregates over `samples` (4: hardware MSAA, 8: jittered) visibility samples.
 std::unique_ptr<Technique> make_agaa(int samples, float k, int width, int height);
 
