@@ -32,7 +32,7 @@ AgaaClusters define_aggregates(const std::vector<AgaaSample>& samples, const Aga
   const float len = std::sqrt(dot(average.normal, average.normal));
   if (len > 1e-6f) average.normal = {average.normal.x / len, average.normal.y / len, average.normal.z / len};
 
-  const float k = settings.k;
+  const float k = settings.k_per_depth > 0.0f ? settings.k_per_depth * std::abs(average.position.z) : settings.k;
   std::vector<int> seeds;
   const auto farthest = [&](auto&& score) {
     int best = -1;

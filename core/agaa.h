@@ -18,7 +18,17 @@ struct AgaaSettings {
   int aggregates = 2;            // c, 1..4
   float k = 0.1f;                // characteristic length in scene units (the paper: 10 cm)
   float min_separation = 0.25f;  // t: a further aggregate only when this far (eq. 1) from the others
+  // > 0: k relative to the view instead, k = k_per_depth * |z| of the pixel's mean sample
+  // position (view space). With k_per_depth = K * 2 tan(fov_y / 2) / height, k is K pixel
+  // footprints at the surface: the same clustering for a model in metres or millimetres.
+  float k_per_depth = 0.0f;
 };
+
+// k_per_depth for k = `pixels` pixel footprints in a view whose projection has P[1][1] =
+// `projection_y_scale` (= 1 / tan(fov_y / 2)) and `height` rows.
+inline float agaa_k_per_depth(float pixels, float projection_y_scale, int height) {
+  return pixels * 2.0f / (projection_y_scale * float(height));
+}
 
 struct AgaaSample {
   bool valid = false;  // false: the sample sees the background

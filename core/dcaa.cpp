@@ -68,6 +68,7 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
   for (int i = 0; i < int(surfaces_.size()); ++i) {
     const float d = dot(surfaces_[i].normal, in.normal);
     if (!(d > settings_.cos_normal_threshold) || !depth_intervals_overlap(surfaces_[i].depth, in.depth)) continue;
+    if (settings_.merge_disjoint_only && (surfaces_[i].coverage & in.coverage)) continue;
     const float overlap = depth_overlap_amount(surfaces_[i].depth, in.depth);
     if (best < 0 || d > best_dot || (d == best_dot && overlap > best_overlap)) best = i, best_dot = d, best_overlap = overlap;
   }

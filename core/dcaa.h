@@ -24,6 +24,10 @@ struct DcaaSettings {
   // (true); false drops it, so a hidden surface (a back face, the far side of a fin) never blends
   // its colour, normal and depth into a visible one.
   bool merge_hidden = true;
+  // First merge only into a surface that covers none of the fragment's samples: fragments of one
+  // tessellated surface never cover a sample twice, two layers crossing at a small angle do
+  // (the paper's normal and depth tests alone merge them; its Fig. 10(b)). false: the paper.
+  bool merge_disjoint_only = false;
 };
 
 struct DcaaSurface {

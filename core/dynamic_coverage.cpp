@@ -18,6 +18,7 @@ DcaaSettings dynamic_coverage_surface_settings() {
   s.max_surfaces = 2;
   s.per_sample_visibility = true;
   s.merge_hidden = false;
+  s.merge_disjoint_only = true;
   return s;
 }
 

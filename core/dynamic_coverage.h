@@ -30,11 +30,13 @@
 //  1. Slots start empty; samples no slot covers show the clear colour. The background is an
 //     implicit surface that never needs a slot (the seed's full-mask background slot is evicted
 //     by the second fragment, then the division by TCC hides it).
-//  2. One surface, one slot: a fragment whose normal is within pi/16 of a slot's and whose depth
-//     interval over the pixel overlaps it (DCAA's test: a continuous depth plane and normal) is
-//     merged into it (masks ORed; colour, depth plane and normal averaged by coverage). A
-//     tessellated surface fills one slot instead of both; "many overlaps with equal coverage"
-//     of one surface add up instead of replacing each other.
+//  2. One surface, one slot: a fragment whose normal is within pi/16 of a slot's, whose depth
+//     interval over the pixel overlaps it (DCAA's test: a continuous depth plane and normal) and
+//     which covers none of the slot's samples (triangles of one surface never cover a sample
+//     twice; two layers crossing at a small angle do) is merged into it (masks ORed; colour,
+//     depth plane and normal averaged by coverage). A tessellated surface fills one slot
+//     instead of both; "many overlaps with equal coverage" of one surface add up instead of
+//     replacing each other.
 //  3. Otherwise it takes an empty slot.
 //  4. Both slots full: of the two slots and the fragment, the one showing the fewest of the 16
 //     samples when each sample takes the nearest depth plane covering it (ties: the farther at
@@ -48,9 +50,10 @@
 //     lies behind the surface it stands on, and the surface wins samples the fin covers.)
 //  6. A fragment covering no sample (a partial overlap between samples, a thin triangle below
 //     the sampling) and non-finite input are ignored as in the seed rules.
-// Rules 2-5 are DCAA's Algorithm 1 (core/dcaa.h) with 2 surfaces over 16 samples, its second
-// merge counting visibility per sample and dropping hidden surfaces; the GL resolve is DCAA's
-// with those settings (dynamic_coverage_surface_settings()).
+// Rules 2-5 are DCAA's Algorithm 1 (core/dcaa.h) with 2 surfaces over 16 samples, its first
+// merge only between disjoint coverage, its second counting visibility per sample and dropping
+// hidden surfaces; the GL resolve is DCAA's with those settings
+// (dynamic_coverage_surface_settings()).
 #pragma once
 
 #include <cstdint>

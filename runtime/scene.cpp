@@ -1,6 +1,8 @@
 #include "runtime/scene.h"
 
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
 #include <future>
 #include <limits>
 #include <memory>
@@ -35,6 +37,16 @@ Scene load_scene_within(const std::string& spec, double seconds) {
                              std::to_string(int(seconds)) + " s (a malformed file can make the "
                              "model importer loop forever)");
   return result.get();
+}
+
+Scene scaled_scene(Scene scene, float factor) {
+  if (!(factor > 0.0f) || !std::isfinite(factor)) throw std::invalid_argument("scene scale must be a finite number > 0");
+  for (SceneVertex& v : scene.vertices) v.position *= factor;
+  if (scene.camera) {
+    scene.camera->eye *= factor, scene.camera->target *= factor;
+    scene.camera->near_plane *= factor, scene.camera->far_plane *= factor;
+  }
+  return scene;
 }
 
 std::string scene_short_name(const std::string& spec) {

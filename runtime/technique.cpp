@@ -1,6 +1,7 @@
 #include "runtime/technique.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/dynamic_coverage.h"
@@ -47,7 +48,8 @@ void validate(const TechniqueOptions& o) {
   } else if (o.technique == "agaa") {
     const int n = samples_or(o, 8);
     if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
-    if (!(o.agaa_k > 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length > 0");
+    if (!(o.agaa_k >= 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length >= 0");
+    if (!(o.agaa_k_pixels > 0.0) || !std::isfinite(o.agaa_k_pixels)) bad("agaa --agaa-k-pixels must be finite and > 0");
   } else if (o.technique == "dyncov") {
     if (o.samples != 0 && o.samples != 16) bad("dyncov always uses 16 coverage samples");
     dynamic_coverage_rules(o.rules);
@@ -91,7 +93,13 @@ std::string technique_label(const TechniqueOptions& o) {
   if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
   if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
   if (o.technique == "ssaa-filtered") return "ssaa-filtered k" + std::to_string(o.kernel);
-  if (o.technique == "agaa") return "agaa " + std::to_string(samples_or(o, 8)) + "x";
+  if (o.technique == "agaa") {
+    std::string label = "agaa " + std::to_string(samples_or(o, 8)) + "x";
+    std::ostringstream k;
+    if (o.agaa_k > 0.0) k << " k" << o.agaa_k;
+    else if (o.agaa_k_pixels != TechniqueOptions{}.agaa_k_pixels) k << " k" << o.agaa_k_pixels << "px";
+    return label + k.str();
+  }
   const int n = samples_or(o, 8);
   std::string label = "rsaa " + std::to_string(n) + "x ";
   if (n == 4) label += (o.pattern.empty() ? std::string("gl4x") : o.pattern) + " ";
@@ -104,7 +112,11 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
   if (o.technique == "fxaa") return make_fxaa(width, height);
   if (o.technique == "dcaa") return make_dcaa(width, height);
   if (o.technique == "dyncov") return make_dynamic_coverage(dynamic_coverage_rules(o.rules), width, height);
-  if (o.technique == "agaa") return make_agaa(samples_or(o, 8), float(o.agaa_k), width, height);
+  if (o.technique == "agaa") {
+    AgaaSettings s;
+    s.k = float(o.agaa_k);
+    return make_agaa(samples_or(o, 8), s, float(o.agaa_k > 0.0 ? 0.0 : o.agaa_k_pixels), width, height);
+  }
   if (o.technique == "ssaa-filtered") return make_filtered_ssaa(o.kernel, width, height);
   if (o.technique == "msaa") return make_hardware_msaa(4, width, height);
   if (o.technique == "ssaa") {

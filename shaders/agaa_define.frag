@@ -6,7 +6,9 @@
 uniform vec2 u_sample_offsets[8];  // window space (+y up), from the pixel centre
 uniform mat4 u_inverse_projection;
 uniform vec2 u_viewport;
-uniform float u_k;
+uniform float u_k;            // AgaaSettings::k (scene units), used when u_k_per_depth is 0
+uniform float u_k_per_depth;  // AgaaSettings::k_per_depth
+float k;
 uniform float u_min_separation;
 out uint o_meta;
 
@@ -15,7 +17,7 @@ vec3 normal[8];
 bool valid[8];
 
 float distance_eq1(vec3 pa, vec3 na, vec3 pb, vec3 nb) {
-  vec3 d = (pa - pb) / u_k;
+  vec3 d = (pa - pb) / k;
   float bend = 1.0 - dot(na, nb);
   return dot(d, d) + bend * bend;
 }
@@ -39,6 +41,7 @@ void main() {
     return;
   }
   mean_position /= float(count);
+  k = u_k_per_depth > 0.0 ? u_k_per_depth * abs(mean_position.z) : u_k;
   float len = length(mean_normal);
   if (len > 1e-6) mean_normal /= len;
   int s0 = -1, s1 = -1;

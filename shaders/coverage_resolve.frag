@@ -18,6 +18,7 @@ const int SORT_SLOTS = 32;  // lists up to this length are sorted locally; longe
 uniform float u_cos_normal_threshold;
 uniform bool u_per_sample_visibility;  // DcaaSettings::per_sample_visibility
 uniform bool u_merge_hidden;           // DcaaSettings::merge_hidden
+uniform bool u_merge_disjoint_only;    // DcaaSettings::merge_disjoint_only
 uniform int u_coverage_sample_count;
 uniform vec2 u_coverage_samples[64];  // pixel space, y down
 #ifndef DCAA_MAX_SURFACES
@@ -95,6 +96,7 @@ void insert_fragment(CoverageRecord r) {
   for (int i = 0; i < s_count; ++i) {
     float d = dot(s_normal[i], s_normal[in_slot]);
     if (!(d > u_cos_normal_threshold) || !overlaps(s_depth[i], s_depth[in_slot])) continue;
+    if (u_merge_disjoint_only && any(notEqual(s_coverage[i] & s_coverage[in_slot], uvec2(0u)))) continue;
     float ov = overlap_amount(s_depth[i], s_depth[in_slot]);
     if (best < 0 || d > best_dot || (d == best_dot && ov > best_overlap)) {
       best = i;

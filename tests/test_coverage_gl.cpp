@@ -166,7 +166,7 @@ TEST_F(CoverageGl, AgaaEqualsItsCpuReferenceOnTheSameSamples) {
     int meta_mismatches = 0, two_aggregates = 0;
     for (int i = 0; i < w * h; ++i) {
       const std::vector<AgaaSample> samples(data.samples_of_pixels.begin() + i * 8, data.samples_of_pixels.begin() + (i + 1) * 8);
-      const AgaaClusters c = define_aggregates(samples, {});
+      const AgaaClusters c = define_aggregates(samples, data.settings);
       std::uint32_t meta = std::uint32_t(c.count) << 16;
       for (int s = 0; s < 8; ++s)
         if (c.aggregate[s] >= 0) meta |= (1u << s) | (std::uint32_t(c.aggregate[s]) << (8 + s));

@@ -395,5 +395,26 @@ TEST(DynamicCoverageSurface, AHiddenSurfaceIsDroppedNotBlendedIntoAVisibleOne) {
   EXPECT_THROW(DcaaPixel{dynamic_coverage_surface_settings()}, std::invalid_argument);  // needs the samples
 }
 
+
+TEST(DynamicCoverageSurface, CrossingLayersAtASmallAngleStayApart) {
+  // Two planes 6 degrees apart crossing at the pixel centre, both covering all 16 samples: the
+  // normal and depth tests alone call them one surface (DCAA merges them and the crossing line
+  // is lost); they cover the same samples, so the surface rules keep two slots and the resolve
+  // gives each the samples where it is in front.
+  const CoverageFragment a = fragment(0, 0xFFFF, 0.5f, 0.0f, {1, 0, 0}, 0.01f);
+  const CoverageFragment b = fragment(1, 0xFFFF, 0.5f, 0.1f, {0, 1, 0}, -0.01f);
+  DcaaSettings paper;
+  paper.max_surfaces = 2;
+  DcaaPixel merged(paper);
+  for (const CoverageFragment& f : {a, b}) merged.insert(f);
+  EXPECT_EQ(merged.surfaces().size(), 1u);
+  DynamicCoveragePixel p({0, 0, 0}, DynamicCoverageRules::Surface);
+  for (const CoverageFragment& f : {a, b}) p.insert(f);
+  ASSERT_EQ(p.surfaces().size(), 2u);
+  int right = 0;  // samples at x > 0, where b (falling with x) is in front
+  for (const Vec2& s : dynamic_coverage_pattern().positions) right += s.x > 0;
+  EXPECT_FLOAT_EQ(p.resolve().g, float(right) / 16.0f);
+}
+
 }  // namespace
 }  // namespace rsaa

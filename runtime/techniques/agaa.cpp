@@ -1,4 +1,4 @@
-// agaa --samples 4|8 [--agaa-k 0.1]: Aggregate G-Buffer Anti-Aliasing (seed 001) with c = 2
+// agaa --samples 4|8 [--agaa-k-pixels 4 | --agaa-k 0.1]: Aggregate G-Buffer Anti-Aliasing (seed 001) with c = 2
 // aggregates. (1) Visibility pre-pass: per sample depth, facet normal and primitive id, from
 // hardware 4x MSAA or 8 jittered single-sample passes (the d3d8x positions). (2) Aggregate
 // definition: a fullscreen pass clusters each pixel's samples (core/agaa.h). (3) Aggregate
@@ -21,8 +21,10 @@ constexpr int kAggregates = 2;
 
 class Agaa : public Technique {
  public:
-  Agaa(int samples, float k, int width, int height)
+  Agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height)
       : samples_(samples),
+        settings_(settings),
+        k_pixels_(k_pixels),
         pattern_(samples == 4 ? query_gl_sample_pattern(4) : builtin_pattern("d3d8x")),
         meta_(gl::make_texture_2d(GL_R32UI, width, height)),
         define_(make_fullscreen_program("agaa_define.frag", defines())),
@@ -59,8 +61,8 @@ class Agaa : public Technique {
     }
     GLuint p = define_.get();
     glProgramUniform2fv(p, glGetUniformLocation(p, "u_sample_offsets"), samples, offsets.data());
-    glProgramUniform1f(p, glGetUniformLocation(p, "u_k"), k);
-    glProgramUniform1f(p, glGetUniformLocation(p, "u_min_separation"), AgaaSettings{}.min_separation);
+    glProgramUniform1f(p, glGetUniformLocation(p, "u_k"), settings.k);
+    glProgramUniform1f(p, glGetUniformLocation(p, "u_min_separation"), settings.min_separation);
     glProgramUniform1i(accumulate_.get(), glGetUniformLocation(accumulate_.get(), "u_meta"), 4);
     p = resolve_.get();
     const char* names[] = {"u_albedo0", "u_geometry0", "u_albedo1", "u_geometry1"};
@@ -89,6 +91,8 @@ class Agaa : public Technique {
     timer_.begin("aggregates");
     bind_samples();
     GLuint p = define_.get();
+    settings_.k_per_depth = k_pixels_ > 0.0f ? agaa_k_per_depth(k_pixels_, view.projection[1][1], view.height) : 0.0f;
+    glProgramUniform1f(p, glGetUniformLocation(p, "u_k_per_depth"), settings_.k_per_depth);
     glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "u_inverse_projection"), 1, GL_FALSE,
                               glm::value_ptr(inverse_projection));
     glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(view.width), float(view.height));
@@ -155,6 +159,7 @@ class Agaa : public Technique {
     };
     AgaaFrameData out;
     out.width = w, out.height = h, out.samples = n;
+    out.settings = settings_;
     out.samples_of_pixels.resize(pixels * n);
     out.meta.resize(pixels);
     out.aggregates.resize(pixels * 2);
@@ -193,6 +198,8 @@ class Agaa : public Technique {
   }
 
   int samples_;
+  AgaaSettings settings_;
+  float k_pixels_;
   SamplePattern pattern_;
   SceneRenderer renderer_;
   gl::Texture depth_, normal_, primitive_, meta_;
@@ -205,8 +212,8 @@ class Agaa : public Technique {
 
 }  // namespace
 
-std::unique_ptr<Technique> make_agaa(int samples, float k, int width, int height) {
-  return std::make_unique<Agaa>(samples, k, width, height);
+std::unique_ptr<Technique> make_agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height) {
+  return std::make_unique<Agaa>(samples, settings, k_pixels, width, height);
 }
 
 AgaaFrameData read_back_agaa(Technique& agaa, const View& view) {

@@ -15,6 +15,7 @@ void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const Dca
   glProgramUniform1f(p, glGetUniformLocation(p, "u_cos_normal_threshold"), settings.cos_normal_threshold);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_per_sample_visibility"), settings.per_sample_visibility);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_hidden"), settings.merge_hidden);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_disjoint_only"), settings.merge_disjoint_only);
 }
 
 std::unique_ptr<Technique> make_dcaa(int width, int height) {

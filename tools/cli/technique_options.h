@@ -28,7 +28,11 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "and the five-tap kernel by the object's filter alpha")
       ->capture_default_str();
   cmd->add_option("--agaa-k", o.agaa_k,
-                  "agaa: characteristic length of the clustering distance, scene units (the paper: 10 cm)")
+                  "agaa: characteristic length of the clustering distance in scene units (the paper: 10 cm); "
+                  "0 (default): relative, --agaa-k-pixels")
+      ->capture_default_str();
+  cmd->add_option("--agaa-k-pixels", o.agaa_k_pixels,
+                  "agaa: characteristic length in pixel footprints at the surface (independent of the units)")
       ->capture_default_str();
   cmd->add_option("--rules", o.rules,
                   "dyncov: surface (merge fragments of one surface, background on uncovered samples) | seed "
