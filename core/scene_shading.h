@@ -21,7 +21,9 @@ inline Normal3 normalized(Normal3 v) {
   return {v.x / len, v.y / len, v.z / len};
 }
 
-inline Rgb shade_surface(Rgb albedo, Normal3 n, Normal3 view_position, float specular_exponent, float specular_scale) {
+// diffuse_scale: see shaders/shading.glsl (AGAA's filtered Lambert term).
+inline Rgb shade_surface(Rgb albedo, Normal3 n, Normal3 view_position, float specular_exponent, float specular_scale,
+                         float diffuse_scale = 1.0f) {
   const Normal3 to_eye = normalized({-view_position.x, -view_position.y, -view_position.z});
   if (dot(n, to_eye) < 0.0f) n = {-n.x, -n.y, -n.z};
   const Normal3 light = normalized({-0.4f, 0.7f, 0.6f});
@@ -30,7 +32,7 @@ inline Rgb shade_surface(Rgb albedo, Normal3 n, Normal3 view_position, float spe
   const float nl = dot(n, light);
   const Normal3 r{-light.x + 2 * nl * n.x, -light.y + 2 * nl * n.y, -light.z + 2 * nl * n.z};
   const float specular = std::pow(std::max(dot(r, to_eye), 0.0f), specular_exponent);
-  const float d = 0.12f + 0.88f * diffuse;
+  const float d = 0.12f + 0.88f * diffuse_scale * diffuse;
   return {albedo.r * d + specular_scale * specular, albedo.g * d + specular_scale * specular,
           albedo.b * d + specular_scale * specular};
 }

@@ -49,6 +49,8 @@ void validate(const TechniqueOptions& o) {
     const int n = samples_or(o, 8);
     if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
     if (!(o.agaa_k >= 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length >= 0");
+    if (o.agaa_diffuse != "filtered" && o.agaa_diffuse != "plain") bad("agaa --agaa-diffuse must be filtered or plain");
+    if (o.agaa_aggregates < 1 || o.agaa_aggregates > 4) bad("agaa --agaa-aggregates must be 1, 2, 3 or 4");
     if (!(o.agaa_k_pixels > 0.0) || !std::isfinite(o.agaa_k_pixels)) bad("agaa --agaa-k-pixels must be finite and > 0");
   } else if (o.technique == "dyncov") {
     if (o.samples != 0 && o.samples != 16) bad("dyncov always uses 16 coverage samples");
@@ -98,6 +100,8 @@ std::string technique_label(const TechniqueOptions& o) {
     std::ostringstream k;
     if (o.agaa_k > 0.0) k << " k" << o.agaa_k;
     else if (o.agaa_k_pixels != TechniqueOptions{}.agaa_k_pixels) k << " k" << o.agaa_k_pixels << "px";
+    if (o.agaa_aggregates != TechniqueOptions{}.agaa_aggregates) k << " c" << o.agaa_aggregates;
+    if (o.agaa_diffuse != TechniqueOptions{}.agaa_diffuse) k << " " << o.agaa_diffuse;
     return label + k.str();
   }
   const int n = samples_or(o, 8);
@@ -115,6 +119,8 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
   if (o.technique == "agaa") {
     AgaaSettings s;
     s.k = float(o.agaa_k);
+    s.aggregates = o.agaa_aggregates;
+    s.filtered_diffuse = o.agaa_diffuse == "filtered";
     return make_agaa(samples_or(o, 8), s, float(o.agaa_k > 0.0 ? 0.0 : o.agaa_k_pixels), width, height);
   }
   if (o.technique == "ssaa-filtered") return make_filtered_ssaa(o.kernel, width, height);

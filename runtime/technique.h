@@ -23,6 +23,8 @@ struct TechniqueOptions {
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
                                      // paper's 0.1); 0: relative, agaa_k_pixels footprints
   double agaa_k_pixels = 4.0;        // agaa: k in pixel footprints at the surface
+  int agaa_aggregates = 2;           // agaa: c, 1..4
+  std::string agaa_diffuse = "filtered";  // agaa: filtered (Lambert term scaled by |Na|) | plain
   std::string rules = "surface";     // dyncov: surface | seed (core/dynamic_coverage.h)
 };
 

@@ -151,31 +151,33 @@ namespace {
 // AGAA 8x: the GL aggregate metadata against define_aggregates() on the read-back samples, and the
 // GL image against agaa_resolve() on the read-back aggregate sums.
 TEST_F(CoverageGl, AgaaEqualsItsCpuReferenceOnTheSameSamples) {
-  for (const char* name : {"builtin:default", "builtin:fence"}) {
+  for (const auto& [name, c] : {std::pair{"builtin:default", 2}, std::pair{"builtin:fence", 4}}) {
     const Scene scene = load_scene(name);
     const GpuScene gpu(scene);
     const int w = 96, h = 72;
     const View view = make_view(choose_camera(scene, std::nullopt), w, h);
-    auto t = make_technique(technique_options("agaa", 8), w, h);
+    TechniqueOptions options = technique_options("agaa", 8);
+    options.agaa_aggregates = c;
+    auto t = make_technique(options, w, h);
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, w, h);
     t->render(gpu, view, output.get());
     const DisplayImage gl_image = to_display(read_back_image(output.get(), w, h));
     const AgaaFrameData data = read_back_agaa(*t, view);
     const glm::vec3 bg = gpu.background();
     Image cpu(w, h);
-    int meta_mismatches = 0, two_aggregates = 0;
+    int meta_mismatches = 0, several_aggregates = 0;
     for (int i = 0; i < w * h; ++i) {
       const std::vector<AgaaSample> samples(data.samples_of_pixels.begin() + i * 8, data.samples_of_pixels.begin() + (i + 1) * 8);
-      const AgaaClusters c = define_aggregates(samples, data.settings);
-      std::uint32_t meta = std::uint32_t(c.count) << 16;
+      const AgaaClusters clusters = define_aggregates(samples, data.settings);
+      std::uint32_t meta = std::uint32_t(clusters.count) << 24;
       for (int s = 0; s < 8; ++s)
-        if (c.aggregate[s] >= 0) meta |= (1u << s) | (std::uint32_t(c.aggregate[s]) << (8 + s));
+        if (clusters.aggregate[s] >= 0) meta |= (1u << s) | (std::uint32_t(clusters.aggregate[s]) << (8 + 2 * s));
       meta_mismatches += meta != data.meta[i];
-      two_aggregates += c.count == 2;
-      cpu.pixels[i] = agaa_resolve({data.aggregates[2 * i], data.aggregates[2 * i + 1]}, data.pixel_rays[i],
-                                   {bg.r, bg.g, bg.b});
+      several_aggregates += clusters.count == c;
+      cpu.pixels[i] = agaa_resolve({data.aggregates.begin() + c * i, data.aggregates.begin() + c * (i + 1)},
+                                   data.pixel_rays[i], {bg.r, bg.g, bg.b}, data.settings.filtered_diffuse);
     }
-    EXPECT_GT(two_aggregates, 50) << name;                 // edges make two aggregates
+    EXPECT_GT(several_aggregates, 50) << name;             // edges make c aggregates
     EXPECT_LE(meta_mismatches, w * h / 200) << name;       // float ties may differ
     const DisplayImage cpu_image = to_display(cpu);
     int worst = 0;

@@ -36,7 +36,7 @@ struct AgaaFrameData {
   AgaaSettings settings;  // as used for the frame (k_per_depth from its view)
   std::vector<AgaaSample> samples_of_pixels;  // width * height * samples
   std::vector<std::uint32_t> meta;            // width * height, agaa_samples.glsl's layout
-  std::vector<AgaaAggregateSums> aggregates;  // width * height * 2
+  std::vector<AgaaAggregateSums> aggregates;  // width * height * settings.aggregates
   std::vector<Normal3> pixel_rays;            // width * height, view space
 };
 AgaaFrameData read_back_agaa(Technique& agaa, const View& view);

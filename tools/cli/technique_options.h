@@ -31,6 +31,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "agaa: characteristic length of the clustering distance in scene units (the paper: 10 cm); "
                   "0 (default): relative, --agaa-k-pixels")
       ->capture_default_str();
+  cmd->add_option("--agaa-diffuse", o.agaa_diffuse,
+                  "agaa: filtered (Lambert term scaled by the aggregate's mean normal length) | plain")
+      ->capture_default_str();
+  cmd->add_option("--agaa-aggregates", o.agaa_aggregates, "agaa: c, aggregates per pixel (1-4)")->capture_default_str();
   cmd->add_option("--agaa-k-pixels", o.agaa_k_pixels,
                   "agaa: characteristic length in pixel footprints at the surface (independent of the units)")
       ->capture_default_str();
