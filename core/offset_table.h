@@ -21,6 +21,9 @@ enum class OffsetSource { OneLine, TwoLine, Fallback, Scene };
 constexpr int kOffsetSourceCount = 4;
 const char* to_string(OffsetSource source);  // "one-line", "two-line", "fallback", "scene"
 
+// Read budget of a table file: the 16x table is under 3 MB.
+constexpr std::uint64_t kMaxTableFileBytes = std::uint64_t{16} << 20;
+
 // Tables are 2^n entries; beyond 16 samples they stop being practical lookup tables.
 constexpr int kMaxTableSamples = 16;
 
@@ -56,7 +59,9 @@ std::string offset_table_glsl(const OffsetTable& table);
 std::string offset_table_hlsl(const OffsetTable& table);
 
 // Writes DIR/STEM.json, DIR/STEM.glsl and DIR/STEM.hlsl together (all or none); STEM is the
-// pattern name unless given. Returns the paths.
+// pattern name unless given. Refuses (std::invalid_argument) a stem or pattern name that is not
+// a valid pattern name and a table the reader would refuse (non-finite or |offset| > 1).
+// Returns the paths.
 std::vector<std::string> write_offset_table_files(const OffsetTable& table, const std::string& dir,
                                                   const std::string& stem = "");
 

@@ -1,6 +1,7 @@
 // Sample patterns: ordered subsample positions in pixel space (see conventions.h).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,18 @@ bool is_builtin_pattern(const std::string& name);
 // Throws std::invalid_argument naming the known patterns when `name` is not one of them.
 SamplePattern builtin_pattern(const std::string& name);
 
-// Validates and wraps positions given in pixel space. Throws std::invalid_argument when a
-// position is not finite, lies outside the pixel [-0.5, 0.5]^2, or the count is not 1..64.
+// A pattern name is 1 to 64 letters, digits, '-' or '_': it becomes file names and shader
+// identifiers, so it can neither leave a directory nor add lines to generated code.
+constexpr std::size_t kMaxPatternNameLength = 64;
+bool is_valid_pattern_name(const std::string& name);
+
+// Two samples closer than this in both coordinates, or a coordinate nonzero but smaller, make
+// a degenerate pattern (coincident or subnormal positions): refused.
+constexpr double kMinSampleSpacing = 1.0 / 1024.0;
+
+// Validates and wraps positions given in pixel space. Throws std::invalid_argument when the
+// name is invalid, a position is not finite, lies outside the pixel [-0.5, 0.5]^2, is
+// degenerate (see kMinSampleSpacing), or the count is not 1..64.
 SamplePattern pattern_from_positions(const std::string& name, const std::vector<Vec2>& positions);
 
 // Positions as glGetMultisamplefv reports them (origin bottom-left, y up, in [0,1]^2).
