@@ -1,7 +1,7 @@
 #include "runtime/rsaa_pass.h"
 
 #include <algorithm>
-#include <regex>
+#include <cmath>
 #include <stdexcept>
 #include <type_traits>
 
@@ -24,36 +24,69 @@ struct RsaaTargets::Objects {
 };
 
 struct RsaaPass::Objects {
-  gl::Texture codes, subsample_depth;
-  std::vector<gl::Framebuffer> subsample_targets;
+  std::vector<gl::Texture> codes;  // four subsamples per texel (RGBA), ceil(n / 4) textures
+  gl::Texture subsample_depth, table;
+  std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Program subsample_program, post_program;
   gl::CachedFramebuffer resolve_target;
 };
 
 namespace {
 
-SamplePattern pattern_named(const std::string& name) {
-  if (name == "gl4x") return query_gl_sample_pattern(4);
-  if (name == "d3d4x" || name == "d3d8x") return builtin_pattern(name);
-  throw std::invalid_argument("RSAA pattern '" + name + "' is not one of d3d4x, d3d8x, gl4x");
+
+// The table the pass uses: the settings' own, or the built-in one of the pattern named.
+OffsetTable table_of(const RsaaSettings& settings) {
+  if (!settings.table) {
+    if (settings.pattern != "d3d4x" && settings.pattern != "d3d8x" && settings.pattern != "gl4x")
+      throw std::invalid_argument("RSAA pattern '" + settings.pattern + "' is not one of d3d4x, d3d8x, gl4x " +
+                                  "(other patterns: pass their table)");
+    OffsetTable table = gl::builtin_offset_table(settings.pattern);
+    if (settings.pattern == "gl4x") {  // the driver's positions must be the ones it was trained for
+      const SamplePattern driver = query_gl_sample_pattern(4);
+      for (int i = 0; i < driver.size(); ++i)
+        if (length(driver.positions[i] - table.pattern.positions[i]) > 1e-6)
+          throw std::runtime_error("tables/gl4x.json was trained for other sample positions than this driver's "
+                                   "(sample " + std::to_string(i) + "); retrain it with rsaa train --pattern gl4x");
+    }
+    return table;
+  }
+  const OffsetTable& table = *settings.table;
+  if (!settings.pattern.empty() && settings.pattern != table.pattern.name)
+    throw std::invalid_argument("the RSAA table is for pattern '" + table.pattern.name + "' (" +
+                                std::to_string(table.pattern.size()) + " samples), not '" + settings.pattern + "'");
+  if (table.pattern.size() < 1 || table.pattern.size() > kMaxTableSamples ||
+      table.offsets.size() != (std::size_t(1) << table.pattern.size()))
+    throw std::invalid_argument("the RSAA table for '" + table.pattern.name + "' has " +
+                                std::to_string(table.offsets.size()) + " offsets for " +
+                                std::to_string(table.pattern.size()) + " samples");
+  return table;
 }
 
-// The sample positions baked into a GLSL table (GL window space), back in pixel space.
-std::vector<Vec2> table_sample_positions(const std::string& glsl) {
-  const std::size_t start = glsl.find("rsaa_sample_positions[");
-  const std::string body = glsl.substr(start, glsl.find(';', start) - start);
-  static const std::regex pair(R"(vec2\(([-+0-9.eE]+), ([-+0-9.eE]+)\))");
-  std::vector<Vec2> out;
-  for (auto it = std::sregex_iterator(body.begin(), body.end(), pair); it != std::sregex_iterator(); ++it)
-    out.push_back(gl_to_pixel({std::stod((*it)[1]), std::stod((*it)[2])}));
-  return out;
+// The table as a texture: texel (mask % 256, mask / 256) = (dx, dy) in GL window space, the
+// mask's representative dissimilar subsample (post-pass authentication), 0.
+gl::Texture table_texture(const OffsetTable& table) {
+  const int entries = int(table.offsets.size());
+  const int width = std::min(entries, 256), height = (entries + 255) / 256;
+  std::vector<float> texels(std::size_t(width) * height * 4, 0.0f);
+  for (int mask = 0; mask < entries; ++mask) {
+    const Vec2 gl = pixel_to_gl(table.offsets[mask]);
+    if (!std::isfinite(gl.x) || !std::isfinite(gl.y) || std::abs(gl.x) > 1.0 || std::abs(gl.y) > 1.0)
+      throw std::invalid_argument("the RSAA table for '" + table.pattern.name + "' has offset " +
+                                  std::to_string(mask) + " outside [-1, 1]");
+    float* t = &texels[std::size_t(mask) * 4];
+    t[0] = float(gl.x), t[1] = float(gl.y);
+    t[2] = float(std::max(0, representative_dissimilar(table.pattern, Mask(mask))));
+  }
+  gl::Texture texture = gl::make_texture_2d(GL_RGBA32F, width, height);
+  glTextureSubImage2D(texture.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+  return texture;
 }
 
 GLenum code_format(int bits) {
   switch (bits) {
-    case 8: return GL_R8UI;
-    case 16: return GL_R16UI;
-    case 32: return GL_R32UI;
+    case 8: return GL_RGBA8UI;
+    case 16: return GL_RGBA16UI;
+    case 32: return GL_RGBA32UI;
   }
   throw std::invalid_argument("RSAA code bits must be 8, 16 or 32, not " + std::to_string(bits));
 }
@@ -140,31 +173,21 @@ SamplePattern query_gl_sample_pattern(int samples) {
 }
 
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
-    : settings_(settings),
-      pattern_(pattern_named(settings.pattern)),
-      width_(width),
-      height_(height),
-      gl_(std::make_unique<Objects>()) {
+    : settings_(settings), width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   if (settings.auth < 0 || settings.auth > 2)
     throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
   if (!(settings.threshold >= 0.0f)) throw std::invalid_argument("RSAA threshold must be >= 0");
-  const std::string table = gl::table_glsl(pattern_.name);
-  const std::vector<Vec2> baked = table_sample_positions(table);
-  if (baked.size() != pattern_.positions.size())
-    throw std::runtime_error("tables/" + pattern_.name + ".glsl has " + std::to_string(baked.size()) +
-                             " samples; the pattern has " + std::to_string(pattern_.size()));
-  for (int i = 0; i < pattern_.size(); ++i)
-    if (length(baked[i] - pattern_.positions[i]) > 1e-6)
-      throw std::runtime_error("tables/" + pattern_.name + ".glsl was trained for other sample " +
-                               "positions than this driver's (sample " + std::to_string(i) +
-                               "); retrain it with rsaa train --pattern " + pattern_.name);
+  const OffsetTable table = table_of(settings);
+  pattern_ = table.pattern;
+  gl_->table = table_texture(table);
 
   const int n = pattern_.size();
-  gl_->codes = gl::make_texture_2d_array(code_format(settings.code_bits), width, height, n);
   gl_->subsample_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
-  for (int i = 0; i < n; ++i)
+  for (int k = 0; k < (n + 3) / 4; ++k) {
+    gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
     gl_->subsample_targets.push_back(
-        gl::make_framebuffer({{gl_->codes.get(), i}}, {gl_->subsample_depth.get()}));
+        gl::make_framebuffer({{gl_->codes.back().get()}}, {gl_->subsample_depth.get()}));
+  }
 
   std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(n) + "\n" +
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
@@ -180,19 +203,12 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                         defines, "RSAA pre-pass");
   if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
   gl_->post_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
-                                    {GL_FRAGMENT_SHADER, table + gl::shader_source("rsaa_post.frag")}},
+                                    {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
                                    defines, "RSAA post-process");
   std::vector<glm::ivec2> steps;
   for (const Vec2& s : pattern_.positions) steps.push_back(window_step(s));
   const GLuint post = gl_->post_program.get();
   glProgramUniform2iv(post, glGetUniformLocation(post, "u_neighbours"), n, glm::value_ptr(steps[0]));
-  if (settings.auth == 1) {
-    std::vector<GLint> representative(std::size_t(1) << n);
-    for (std::size_t mask = 0; mask < representative.size(); ++mask)
-      representative[mask] = std::max(0, representative_dissimilar(pattern_, Mask(mask)));
-    glProgramUniform1iv(post, glGetUniformLocation(post, "u_representative"),
-                        GLsizei(representative.size()), representative.data());
-  }
   gl::check("creating the RSAA pass");
 }
 RsaaPass::~RsaaPass() = default;
@@ -201,7 +217,7 @@ RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;
 
 void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
   validate_frame(frame, width_, height_);
-  const gl::SavedState saved(4);
+  const gl::SavedState saved(8);
   gl::set_pass_state(true);  // before the clears: they obey the engine's scissor and masks
   const GLuint program = gl_->subsample_program.get();
   set_frame_uniforms(program, frame, settings_.threshold);
@@ -212,17 +228,19 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
   glBindTextureUnit(2, frame.centre_primitive);
   glBindTextureUnit(3, frame.centre_depth);
   const GLint neighbour = glGetUniformLocation(program, "u_neighbour");
+  const GLuint zero[4] = {0, 0, 0, 0};
+  const GLfloat far_depth = 1.0f;
+  for (const gl::Framebuffer& fb : gl_->subsample_targets) glClearNamedFramebufferuiv(fb.get(), GL_COLOR, 0, zero);
   for (int i = 0; i < pattern_.size(); ++i) {
-    const GLuint fb = gl_->subsample_targets[i].get();
-    const GLuint zero[4] = {0, 0, 0, 0};
-    const GLfloat far_depth = 1.0f;
-    glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
+    // Subsample i goes to channel i % 4 of code texture i / 4; the depth buffer is its own.
+    const GLuint fb = gl_->subsample_targets[i / 4].get();
     glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
     const glm::ivec2 step = window_step(pattern_.positions[i]);
     glProgramUniform2i(program, neighbour, step.x, step.y);
     const Vec2 s = pattern_.positions[i];
     gl::set_pass_state(true);  // again: the previous callback may have changed it
+    glColorMaski(0, i % 4 == 0, i % 4 == 1, i % 4 == 2, i % 4 == 3);
     glViewport(0, 0, frame.width, frame.height);
     glUseProgram(program);
     draw_geometry(program, jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height));
@@ -241,7 +259,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
   if (settings_.output_mask && mask_output)
     gl::require_texture(mask_output, GL_R32UI, width_, height_, "RsaaPass::resolve mask_output");
-  const gl::SavedState saved(4);
+  const gl::SavedState saved(8);
   gl::set_pass_state(false);
   std::vector<gl::Attachment> targets = {{output}};
   if (settings_.output_mask) {
@@ -254,11 +272,15 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   set_uniform(program, "u_colour", 0);
   set_uniform(program, "u_centre_normal", 1);
   set_uniform(program, "u_centre_depth", 2);
-  set_uniform(program, "u_codes", 3);
+  set_uniform(program, "u_table", 3);
   glBindTextureUnit(0, frame.colour);
   glBindTextureUnit(1, frame.centre_normal);
   glBindTextureUnit(2, frame.centre_depth);
-  glBindTextureUnit(3, gl_->codes.get());
+  glBindTextureUnit(3, gl_->table.get());
+  for (std::size_t k = 0; k < gl_->codes.size(); ++k) {
+    set_uniform(program, ("u_codes[" + std::to_string(k) + "]").c_str(), int(4 + k));
+    glBindTextureUnit(GLuint(4 + k), gl_->codes[k].get());
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);
   glUseProgram(program);

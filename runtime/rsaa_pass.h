@@ -37,7 +37,7 @@
 //
 // GL STATE. Both calls restore what they change: framebuffer bindings, viewport, current
 // program, depth test/function/mask, blending, scissor test, colour mask 0, the vertex array and
-// the textures bound to units 0-3; the engine's scissor and masks do not reach the pass.
+// the textures bound to units 0-7; the engine's scissor and masks do not reach the pass.
 // Textures and programs they create belong to the RsaaPass object.
 #pragma once
 
@@ -47,6 +47,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/offset_table.h"
 #include "core/sample_pattern.h"
 
 namespace rsaa {
@@ -55,6 +56,11 @@ namespace rsaa {
 using GlName = unsigned int;
 
 struct RsaaSettings {
+  // The offset table. Null: the built-in table of `pattern`. Otherwise any table (a retrained,
+  // custom-pattern or scene-specific one, read with rsaa::read_offset_table() or built in memory):
+  // the pre-pass then samples the table's own positions, and `pattern`, when not empty, must name
+  // the table's pattern (a mismatch is refused naming both).
+  std::shared_ptr<const OffsetTable> table;
   std::string pattern = "d3d8x";  // d3d8x | d3d4x | gl4x (the driver's 4x pattern)
   // sadp: the paper's SADP; depth: the paper's depth alternative (relative depth difference);
   // sadp-plane (ours): SADP or the gap between the surfaces' planes along the view ray, whichever
@@ -116,7 +122,7 @@ class RsaaPass {
 
   const SamplePattern& pattern() const { return pattern_; }
   // Bytes per pixel of the similarity codes this pass keeps.
-  double code_bytes_per_pixel() const { return pattern_.size() * settings_.code_bits / 8.0; }
+  double code_bytes_per_pixel() const { return (pattern_.size() + 3) / 4 * 4 * settings_.code_bits / 8.0; }
 
  private:
   struct Objects;  // GL objects, defined in rsaa_pass.cpp

@@ -1,19 +1,22 @@
-// RSAA post-process: similarity codes -> mask -> offset from the baked table -> one bilinear
-// fetch of the 1x colour. The table (tables/P.glsl, GL window space) is included before this.
+// RSAA post-process: similarity codes -> mask -> offset from the table -> one bilinear fetch of
+// the 1x colour. The table is a texture filled by the pass from table data (core's OffsetTable),
+// so any table renders without rebuilding: texel (mask % 256, mask / 256) holds the offset in GL
+// window space (+y up) and, for post-pass authentication, the mask's representative subsample.
 #include "rsaa_common.glsl"
+
+// Codes arrive packed, four subsamples per texel (RSAA_CODE_TEXTURES = ceil(n / 4) textures):
+// subsample i is channel i % 4 of texture i / 4.
+#define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
 
 uniform sampler2D u_colour;  // linear filtering, clamp to edge
 uniform usampler2D u_centre_normal;
 uniform sampler2D u_centre_depth;
-uniform usampler2DArray u_codes;  // layer i = subsample i
+uniform usampler2D u_codes[RSAA_CODE_TEXTURES];
+uniform sampler2D u_table;  // RGBA32F: offset.xy, representative subsample, unused
 uniform mat4 u_inverse_projection;
 uniform vec2 u_viewport;
 uniform float u_threshold;
 uniform ivec2 u_neighbours[RSAA_SAMPLE_COUNT];  // nearest outside pixel per subsample
-#if RSAA_AUTH == 1
-// Per mask: the representative dissimilar subsample (core's representative_dissimilar()).
-uniform int u_representative[1 << RSAA_SAMPLE_COUNT];
-#endif
 
 layout(location = 0) out vec4 o_colour;
 #ifdef RSAA_OUTPUT_MASK
@@ -22,21 +25,41 @@ layout(location = 1) out uint o_mask;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  uvec2 centre_normal = texelFetch(u_centre_normal, pixel, 0).xy;
+  uint codes[RSAA_SAMPLE_COUNT];
+  uvec4 code_texels[RSAA_CODE_TEXTURES];
+  for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = texelFetch(u_codes[k], pixel, 0);
+  bool any_different = false, any_uncovered = false;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    codes[i] = code_texels[i / 4][i % 4];
+    any_different = any_different || codes[i] > 1u;
+    any_uncovered = any_uncovered || codes[i] == 0u;
+  }
+  // Most pixels: every subsample on the centre's surface (code 1 = similarity 0), or a background
+  // pixel whose subsamples see no surface (code 0) or its surface. Their colour stays.
+  uvec2 centre_normal = uvec2(1u);
+  if (!any_different && any_uncovered) centre_normal = texelFetch(u_centre_normal, pixel, 0).xy;
+  if (!any_different && (!any_uncovered || !rsaa_is_surface(centre_normal))) {
+    o_colour = texelFetch(u_colour, pixel, 0);
+#ifdef RSAA_OUTPUT_MASK
+    o_mask = (1u << RSAA_SAMPLE_COUNT) - 1u;
+#endif
+    return;
+  }
+  centre_normal = texelFetch(u_centre_normal, pixel, 0).xy;
   bool centre_is_surface = rsaa_is_surface(centre_normal);
   float similarity[RSAA_SAMPLE_COUNT];
-  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i)
-    similarity[i] = rsaa_decode_similarity(texelFetch(u_codes, ivec3(pixel, i), 0).x, centre_is_surface);
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) similarity[i] = rsaa_decode_similarity(codes[i], centre_is_surface);
   float split;
   uint mask = rsaa_classify(similarity, u_threshold, split);
   vec4 colour = texelFetch(u_colour, pixel, 0);
   if (mask != (1u << RSAA_SAMPLE_COUNT) - 1u) {
-    vec2 offset = rsaa_offsets[mask];
+    vec4 entry = texelFetch(u_table, ivec2(mask & 255u, mask >> 8u), 0);
+    vec2 offset = entry.xy;
 #if RSAA_AUTH == 1
     // Post-pass authentication (paper section 2.4): if the outside pixel nearest to the
     // representative dissimilar subsample differs from the centre much more than that subsample
     // does, the fetch would blend in a surface the pixel does not show: halve the offset.
-    int fs = u_representative[mask];
+    int fs = int(entry.z);
     ivec2 outside = clamp(pixel + u_neighbours[fs], ivec2(0), ivec2(u_viewport) - 1);
     uvec2 outside_normal = texelFetch(u_centre_normal, outside, 0).xy;
     if (centre_is_surface && rsaa_is_surface(outside_normal)) {

@@ -21,7 +21,8 @@ uniform uint u_primitive_base;
 uniform ivec2 u_neighbour;  // nearest outside pixel of this subsample, window space
 uniform float u_threshold;
 
-layout(location = 0) out uint o_code;
+// The pass packs four subsamples per texel: it writes all four channels and masks the others.
+layout(location = 0) out uvec4 o_code;
 
 vec3 centre_position(ivec2 pixel) {
   return rsaa_view_position(vec2(pixel) + 0.5, texelFetch(u_centre_depth, pixel, 0).x,
@@ -32,12 +33,12 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   // Shortcut: the triangle that covers this subsample also covers the centre.
   if (texelFetch(u_centre_primitive, pixel, 0).x == u_primitive_base + uint(gl_PrimitiveID) + 1u) {
-    o_code = 1u;  // decodes to 0
+    o_code = uvec4(1u);  // decodes to 0
     return;
   }
   uvec2 centre_normal = texelFetch(u_centre_normal, pixel, 0).xy;
   if (!rsaa_is_surface(centre_normal)) {
-    o_code = RSAA_CODE_MAX;  // a surface subsample in a background pixel: different
+    o_code = uvec4(RSAA_CODE_MAX);  // a surface subsample in a background pixel: different
     return;
   }
   vec3 ps = f_in.view_position;
@@ -57,5 +58,5 @@ void main() {
     }
   }
 #endif
-  o_code = rsaa_encode_similarity(similarity);
+  o_code = uvec4(rsaa_encode_similarity(similarity));
 }
