@@ -105,7 +105,9 @@ TEST(Trainer, RejectsBadOptions) {
   o.two_line_weight = std::nan("");
   EXPECT_THROW(train_offset_table(o), std::invalid_argument);
   o.two_line_weight = 0.5;
-  o.pattern = pattern_from_positions("custom-17", std::vector<Vec2>(17));
+  std::vector<Vec2> seventeen;  // distinct: coincident positions are refused on their own
+  for (int i = 0; i < 17; ++i) seventeen.push_back({i / 34.0, 0.0});
+  o.pattern = pattern_from_positions("custom-17", seventeen);
   EXPECT_THROW(train_offset_table(o), std::invalid_argument);
 }
 
