@@ -111,6 +111,17 @@ PixelStep outside_pixel_towards(Vec2 sample) {
   return {int(std::lround(sample.x / scale)), int(std::lround(sample.y / scale))};
 }
 
+int representative_dissimilar(const SamplePattern& pattern, Mask mask) {
+  int best = -1;
+  double best_distance = -1.0;
+  for (int i = 0; i < pattern.size(); ++i) {
+    const Vec2 s = pattern.positions[i];
+    const double d = s.x * s.x + s.y * s.y;
+    if (!is_similar(mask, i) && d >= best_distance) best = i, best_distance = d;
+  }
+  return best;
+}
+
 bool is_known_pattern_name(const std::string& name) {
   return is_builtin_pattern(name) || name == "gl4x" ||
          (name.rfind("custom-", 0) == 0 && name.size() > 7 && is_valid_pattern_name(name));

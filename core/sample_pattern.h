@@ -54,6 +54,12 @@ struct PixelStep {
 };
 PixelStep outside_pixel_towards(Vec2 sample);
 
+// The representative of a mask's dissimilar cluster, for post-pass authentication: the
+// dissimilar subsample farthest from the pixel centre and, of equally distant ones, the last in
+// pattern order, as Listing 3 of the paper (it keeps the last dissimilar subsample it meets; the
+// d3d8x order is by increasing distance). -1 when every subsample is similar.
+int representative_dissimilar(const SamplePattern& pattern, Mask mask);
+
 // Names a table may carry besides the built-ins: patterns whose positions come from the
 // table itself ("gl4x", read from the GL driver, and "custom-..." patterns).
 bool is_known_pattern_name(const std::string& name);

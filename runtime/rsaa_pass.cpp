@@ -1,5 +1,6 @@
 #include "runtime/rsaa_pass.h"
 
+#include <algorithm>
 #include <regex>
 #include <stdexcept>
 
@@ -125,7 +126,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(n) + "\n" +
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
                         "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n";
-  if (settings.depth_similarity) defines += "#define RSAA_SIMILARITY_DEPTH\n";
+  if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
+  else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
+  else if (settings.similarity != "sadp")
+    throw std::invalid_argument("RSAA similarity '" + settings.similarity +
+                                "' is not one of sadp, depth, sadp-plane");
   subsample_program_ = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                          {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
                                          {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
@@ -138,6 +143,13 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   for (const Vec2& s : pattern_.positions) steps.push_back(window_step(s));
   glProgramUniform2iv(post_program_.get(), glGetUniformLocation(post_program_.get(), "u_neighbours"),
                       n, glm::value_ptr(steps[0]));
+  if (settings.auth == 1) {
+    std::vector<GLint> representative(std::size_t(1) << n);
+    for (std::size_t mask = 0; mask < representative.size(); ++mask)
+      representative[mask] = std::max(0, representative_dissimilar(pattern_, Mask(mask)));
+    glProgramUniform1iv(post_program_.get(), glGetUniformLocation(post_program_.get(), "u_representative"),
+                        GLsizei(representative.size()), representative.data());
+  }
   gl::check("creating the RSAA pass");
 }
 

@@ -25,9 +25,12 @@ namespace rsaa {
 
 struct RsaaSettings {
   std::string pattern = "d3d8x";  // d3d8x | d3d4x | gl4x (the driver's 4x pattern)
-  bool depth_similarity = false;  // false: SADP (paper), true: depth difference
+  // sadp: the paper's SADP; depth: the paper's depth alternative (relative depth difference);
+  // sadp-plane (ours): SADP or the gap between the surfaces' planes along the view ray, whichever
+  // is larger, so that silhouettes over surfaces seen at grazing angles are found.
+  std::string similarity = "sadp-plane";
   int auth = 0;                   // 0 none, 1 post-pass (halve offsets), 2 pre-pass (reclassify)
-  float threshold = 0.4f;         // SADP units, or percent of depth with depth_similarity
+  float threshold = 0.4f;         // SADP units (sadp, sadp-plane), or percent of depth (depth)
   int code_bits = 8;              // 8 | 16 | 32: storage per subsample similarity
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
 };

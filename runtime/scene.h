@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/scene_shading.h"
 #include "runtime/camera.h"
 
 namespace rsaa {
@@ -42,6 +43,9 @@ struct Scene {
   std::vector<TextureImage> textures;
   glm::vec3 background{0.05f, 0.06f, 0.09f};  // linear clear colour
   std::optional<Camera> camera;               // a built-in view; else frame the bounds
+  // Extra lights beside the fixed one (view space; none unless a caller adds them: the bench's
+  // --lights). Every technique shades with them where it shades (shaders/shading.glsl).
+  std::vector<PointLight> point_lights;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
   // Axis-aligned bounds of the vertices that triangles use.

@@ -53,7 +53,7 @@ std::vector<Vec2> parse_positions(const std::string& text) {
   return out;
 }
 
-std::string rms_text(const ErrorStats& s) {
+std::string rms_text(const TrainingError::Rms& s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.5f", s.rms);
   return s.count ? buffer : "-";
@@ -155,12 +155,14 @@ int run_train(const TrainArgs& a) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const auto& by = report.masks_by_source;
-  const auto& acc = report.training_accuracy;
+  const auto& acc = report.training_error;
   std::printf("  cases:   %llu generated in %.2f s (%.0f cases/s)\n",
               static_cast<unsigned long long>(a.cases), report.generate_seconds,
               a.cases / std::max(report.generate_seconds, 1e-9));
-  std::printf("  fit:     %llu masks reached, fitted in %.2f s (the all-similar mask stays (0, 0))\n",
-              static_cast<unsigned long long>(by[0] + by[1]), report.fit_seconds);
+  std::printf("  fit:     %llu masks reached (%llu case groups), fitted in %.2f s (the all-similar "
+              "mask stays (0, 0))\n",
+              static_cast<unsigned long long>(by[0] + by[1]),
+              static_cast<unsigned long long>(report.case_groups), report.fit_seconds);
   std::printf("  masks:   %llu explained by one line, %llu only by two lines, %llu by no case "
               "(fallback rule)\n",
               static_cast<unsigned long long>(by[0]), static_cast<unsigned long long>(by[1]),

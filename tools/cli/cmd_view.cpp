@@ -56,7 +56,7 @@ std::string screenshot_name(const std::string& pattern, int number) {
 
 const char* kHelp =
     "keys: 1 noaa, 2 msaa 4x, 3 msaa 8x, 4 ssaa 16x, 5 ssaa 64x, 6 rsaa 8x, 7 rsaa 4x, 8 dcaa, 9 dyncov,\n"
-    "      S/D similarity sadp/depth, A cycle auth 0/1/2, P screenshot, Q or Esc quit\n";
+    "      S/D/G similarity sadp/depth/sadp-plane, A cycle auth 0/1/2, P screenshot, Q or Esc quit\n";
 
 class Viewer {
  public:
@@ -82,13 +82,14 @@ class Viewer {
       case GLFW_KEY_9: o = technique_options("dyncov", 0); break;
       case GLFW_KEY_S: o.similarity = "sadp"; break;
       case GLFW_KEY_D: o.similarity = "depth"; break;
+      case GLFW_KEY_G: o.similarity = "sadp-plane"; break;
       case GLFW_KEY_A: o.auth = (o.auth + 1) % 3; break;
       case GLFW_KEY_P: screenshot(); return true;
       case GLFW_KEY_Q:
       case GLFW_KEY_ESCAPE: return false;
       default: return true;
     }
-    if (o.technique != "rsaa") o.similarity = "sadp", o.auth = 0;
+    if (o.technique != "rsaa") o.similarity = TechniqueOptions().similarity, o.auth = 0;
     options_ = o;
     rebuild();
     return true;
