@@ -32,7 +32,7 @@ AgaaClusters define_aggregates(const std::vector<AgaaSample>& samples, const Aga
   const float len = std::sqrt(dot(average.normal, average.normal));
   if (len > 1e-6f) average.normal = {average.normal.x / len, average.normal.y / len, average.normal.z / len};
 
-  const float k = settings.k;
+  const float k = settings.k_per_depth > 0.0f ? settings.k_per_depth * std::abs(average.position.z) : settings.k;
   std::vector<int> seeds;
   const auto farthest = [&](auto&& score) {
     int best = -1;
@@ -84,7 +84,8 @@ float toksvig_exponent(float normal_length, float exponent) {
   return std::max(denominator > 0.0f ? l / denominator * exponent : 0.0f, 1e-3f);
 }
 
-Rgb agaa_resolve(const std::vector<AgaaAggregateSums>& aggregates, Normal3 pixel_ray, Rgb background) {
+Rgb agaa_resolve(const std::vector<AgaaAggregateSums>& aggregates, Normal3 pixel_ray, Rgb background,
+                 bool filtered_diffuse) {
   Rgb c;
   float covered = 0.0f;
   for (const AgaaAggregateSums& a : aggregates) {
@@ -98,8 +99,9 @@ Rgb agaa_resolve(const std::vector<AgaaAggregateSums>& aggregates, Normal3 pixel
     const Normal3 n = len > 1e-6f ? Normal3{mean.x / len, mean.y / len, mean.z / len}
                                   : normalized({-position.x, -position.y, -position.z});
     const float s = toksvig_exponent(len, kSceneSpecularExponent);
-    const Rgb shaded =
-        shade_surface(albedo, n, position, s, kSceneSpecularScale * (1.0f + s) / (1.0f + kSceneSpecularExponent));
+    const float diffuse_scale = filtered_diffuse && len > 1e-6f ? std::min(len, 1.0f) : 1.0f;
+    const Rgb shaded = shade_surface(albedo, n, position, s,
+                                     kSceneSpecularScale * (1.0f + s) / (1.0f + kSceneSpecularExponent), diffuse_scale);
     c = {c.r + a.weight * shaded.r, c.g + a.weight * shaded.g, c.b + a.weight * shaded.b};
     covered += a.weight;
   }

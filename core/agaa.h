@@ -18,7 +18,18 @@ struct AgaaSettings {
   int aggregates = 2;            // c, 1..4
   float k = 0.1f;                // characteristic length in scene units (the paper: 10 cm)
   float min_separation = 0.25f;  // t: a further aggregate only when this far (eq. 1) from the others
+  // > 0: k relative to the view instead, k = k_per_depth * |z| of the pixel's mean sample
+  // position (view space). With k_per_depth = K * 2 tan(fov_y / 2) / height, k is K pixel
+  // footprints at the surface: the same clustering for a model in metres or millimetres.
+  float k_per_depth = 0.0f;
+  bool filtered_diffuse = true;  // agaa_resolve()'s filtered_diffuse
 };
+
+// k_per_depth for k = `pixels` pixel footprints in a view whose projection has P[1][1] =
+// `projection_y_scale` (= 1 / tan(fov_y / 2)) and `height` rows.
+inline float agaa_k_per_depth(float pixels, float projection_y_scale, int height) {
+  return pixels * 2.0f / (projection_y_scale * float(height));
+}
 
 struct AgaaSample {
   bool valid = false;  // false: the sample sees the background
@@ -60,7 +71,11 @@ float toksvig_exponent(float normal_length, float exponent);
 // its energy) and composites: sum_a weight_a colour_a + (1 - sum weight) background.
 // `pixel_ray`: view-space direction through the pixel centre. Empty aggregates are skipped; the
 // result is finite for any finite input.
-Rgb agaa_resolve(const std::vector<AgaaAggregateSums>& aggregates, Normal3 pixel_ray, Rgb background);
+// filtered_diffuse: the Lambert term scaled by |Na| (the mean of n.l over the aggregate's unit
+// normals is Na.l while none faces away from the light; the paper filters diffuse from the same
+// Toksvig length); false shades the normalised mean normal as one surface.
+Rgb agaa_resolve(const std::vector<AgaaAggregateSums>& aggregates, Normal3 pixel_ray, Rgb background,
+                 bool filtered_diffuse = true);
 
 // The paper's memory: 6 B per visibility sample + 16 B per aggregate.
 constexpr double agaa_paper_bytes_per_pixel(int samples, int aggregates) { return 6.0 * samples + 16.0 * aggregates; }

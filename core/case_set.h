@@ -1,4 +1,5 @@
-// Case sets: the line cases of DESIGN.md section 2 reduced to what training and evaluation use.
+// Case sets: the line cases of docs/conventions.md section 2 reduced to what training and
+// evaluation use.
 #pragma once
 
 #include <cstdint>

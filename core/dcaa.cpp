@@ -1,6 +1,8 @@
 #include "core/dcaa.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace rsaa {
 namespace {
@@ -15,7 +17,30 @@ Normal3 viewer_normal_if_bad(Normal3 n) {
   return n;
 }
 
+// Per coverage sample, the surface that covers it with the smallest depth at the sample (ties:
+// the earlier surface): how many samples each one shows.
+std::vector<int> front_counts(const std::vector<DcaaSurface>& surfaces, const SamplePattern& pattern) {
+  std::vector<int> counts(surfaces.size(), 0);
+  for (int s = 0; s < pattern.size(); ++s) {
+    int front = -1;
+    float front_depth = 0.0f;
+    for (int i = 0; i < int(surfaces.size()); ++i) {
+      if (!is_similar(surfaces[i].coverage, s)) continue;
+      const float z = surfaces[i].depth.at(pattern.positions[s]);
+      if (front < 0 || z < front_depth) front = i, front_depth = z;
+    }
+    if (front >= 0) ++counts[front];
+  }
+  return counts;
+}
+
 }  // namespace
+
+DcaaPixel::DcaaPixel(DcaaSettings settings, const SamplePattern* coverage_pattern)
+    : settings_(settings), pattern_(coverage_pattern) {
+  if (settings.per_sample_visibility && !coverage_pattern)
+    throw std::invalid_argument("DcaaPixel: per-sample visibility needs the coverage pattern");
+}
 
 DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b) {
   const float wa = float(similar_count(a.coverage)), wb = float(similar_count(b.coverage));
@@ -43,6 +68,7 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
   for (int i = 0; i < int(surfaces_.size()); ++i) {
     const float d = dot(surfaces_[i].normal, in.normal);
     if (!(d > settings_.cos_normal_threshold) || !depth_intervals_overlap(surfaces_[i].depth, in.depth)) continue;
+    if (settings_.merge_disjoint_only && (surfaces_[i].coverage & in.coverage)) continue;
     const float overlap = depth_overlap_amount(surfaces_[i].depth, in.depth);
     if (best < 0 || d > best_dot || (d == best_dot && overlap > best_overlap)) best = i, best_dot = d, best_overlap = overlap;
   }
@@ -72,9 +98,17 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
     closer |= candidates[i].coverage;
     if (k > 0 && (smallest < 0 || visible <= smallest_visible)) smallest = i, smallest_visible = visible;
   }
+  if (settings_.per_sample_visibility) {
+    const std::vector<int> counts = front_counts(candidates, *pattern_);
+    smallest = -1;
+    for (int k = n - 1; k >= 0; --k) {  // back to front: ties go to the farther
+      const int i = front_to_back[k];
+      if (smallest < 0 || counts[i] < smallest_visible) smallest = i, smallest_visible = counts[i];
+    }
+  }
   int target = -1;
   float target_overlap = 0.0f;
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < n && (settings_.merge_hidden || smallest_visible > 0); ++i) {
     if (i == smallest || !depth_intervals_overlap(candidates[i].depth, candidates[smallest].depth)) continue;
     const float overlap = depth_overlap_amount(candidates[i].depth, candidates[smallest].depth);
     if (target < 0 || overlap > target_overlap) target = i, target_overlap = overlap;
@@ -87,18 +121,7 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
 }
 
 std::vector<int> DcaaPixel::visible_counts(const SamplePattern& pattern) const {
-  std::vector<int> counts(surfaces_.size(), 0);
-  for (int s = 0; s < pattern.size(); ++s) {
-    int front = -1;
-    float front_depth = 0.0f;
-    for (int i = 0; i < int(surfaces_.size()); ++i) {
-      if (!is_similar(surfaces_[i].coverage, s)) continue;
-      const float z = surfaces_[i].depth.at(pattern.positions[s]);
-      if (front < 0 || z < front_depth) front = i, front_depth = z;
-    }
-    if (front >= 0) ++counts[front];
-  }
-  return counts;
+  return front_counts(surfaces_, pattern);
 }
 
 Rgb DcaaPixel::resolve(const SamplePattern& pattern, Rgb background) const {

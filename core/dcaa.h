@@ -15,6 +15,19 @@ namespace rsaa {
 struct DcaaSettings {
   int max_surfaces = 4;
   float cos_normal_threshold = 0.98078528f;  // cos(pi / 16), the paper's aligned-normal rule
+  // Second merge, which surface counts as least visible: false (the paper) = the coarse depth
+  // resolve, front to back by depth at the pixel centre; true = per coverage sample by the depth
+  // planes (needs the coverage pattern), right where planes cross inside the pixel (a fin on
+  // the surface it stands on: extrapolated to the centre it lies behind that surface).
+  bool per_sample_visibility = false;
+  // Second merge of a surface with no sample left visible: the paper merges it like any other
+  // (true); false drops it, so a hidden surface (a back face, the far side of a fin) never blends
+  // its colour, normal and depth into a visible one.
+  bool merge_hidden = true;
+  // First merge only into a surface that covers none of the fragment's samples: fragments of one
+  // tessellated surface never cover a sample twice, two layers crossing at a small angle do
+  // (the paper's normal and depth tests alone merge them; its Fig. 10(b)). false: the paper.
+  bool merge_disjoint_only = false;
 };
 
 struct DcaaSurface {
@@ -33,7 +46,8 @@ enum class DcaaEvent { Ignored, Merged, Stored, SecondMerge, Discarded };
 
 class DcaaPixel {
  public:
-  explicit DcaaPixel(DcaaSettings settings = {}) : settings_(settings) {}
+  // `coverage_pattern` (kept by pointer): needed when settings.per_sample_visibility.
+  explicit DcaaPixel(DcaaSettings settings = {}, const SamplePattern* coverage_pattern = nullptr);
 
   // Algorithm 1. Fragments with no coverage or a non-finite depth or colour are ignored (they
   // cover no sample or cannot be weighted); a non-finite normal counts as facing the viewer.
@@ -43,7 +57,9 @@ class DcaaPixel {
   //  3. Else (full): coarse depth resolve of the surfaces plus the fragment (front to back by
   //     depth at the centre, each masked by the closer ones); the one with the smallest visible
   //     coverage, the front-most excluded (ties: the farther), is merged into the surface whose
-  //     depth interval overlaps it most, or dropped when none overlaps.
+  //     depth interval overlaps it most, or dropped when none overlaps. With
+  //     per_sample_visibility the visible coverage is counted per sample instead (no exclusion;
+  //     ties: the farther at the centre); without merge_hidden a surface with none is dropped.
   DcaaEvent insert(const CoverageFragment& fragment);
 
   const std::vector<DcaaSurface>& surfaces() const { return surfaces_; }
@@ -58,6 +74,7 @@ class DcaaPixel {
 
  private:
   DcaaSettings settings_;
+  const SamplePattern* pattern_;
   std::vector<DcaaSurface> surfaces_;
 };
 

@@ -1,5 +1,5 @@
 // Image files through OpenImageIO. PNG and other 8-bit formats hold sRGB-encoded values, EXR
-// holds linear floats; in memory an Image is always linear (DESIGN.md section 5).
+// holds linear floats; in memory an Image is always linear (docs/conventions.md section 5).
 //
 // Reading is bounded: only regular files (no FIFO or device), at most ImageBudget::file_bytes,
 // and the declared size is checked against the budget before any pixel is allocated. Channels

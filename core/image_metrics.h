@@ -1,4 +1,4 @@
-// Image metrics of DESIGN.md section 5, on 8-bit sRGB display values.
+// Image metrics of docs/conventions.md section 5, on 8-bit sRGB display values.
 #pragma once
 
 #include <cstdint>

@@ -153,7 +153,7 @@ OffsetTable parse_offset_table(const std::string& text, const std::string& origi
   if (!version.is_number_integer() || version.get<long long>() != 1)
     reader.fail("version", "expected 1 (the only version this program reads)");
   if (reader.string_field(root, "y_axis") != "down")
-    reader.fail("y_axis", "expected \"down\" (pixel space, DESIGN.md section 1)");
+    reader.fail("y_axis", "expected \"down\" (pixel space, docs/conventions.md section 1)");
   reader.string_field(root, "mask_bit");
 
   const std::string name = reader.string_field(root, "pattern");

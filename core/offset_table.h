@@ -1,5 +1,5 @@
-// Offset tables: one resampling offset per similarity mask (DESIGN.md section 3), and their
-// three file forms (JSON, GLSL include, HLSL include).
+// Offset tables: one resampling offset per similarity mask (docs/conventions.md section 3), and
+// their three file forms (JSON, GLSL include, HLSL include).
 #pragma once
 
 #include <cstdint>
@@ -16,7 +16,7 @@
 namespace rsaa {
 
 // Which rule produced a table entry. Scene: fitted on cases harvested from a scene's renders
-// (rsaa train --from-scene); an addition to DESIGN.md section 3's three values.
+// (rsaa train --from-scene); an addition to docs/conventions.md section 3's three values.
 enum class OffsetSource { OneLine, TwoLine, Fallback, Scene };
 constexpr int kOffsetSourceCount = 4;
 const char* to_string(OffsetSource source);  // "one-line", "two-line", "fallback", "scene"

@@ -20,7 +20,7 @@ struct SamplePattern {
   std::size_t mask_count() const { return std::size_t{1} << positions.size(); }
 };
 
-// Names of the patterns with fixed positions (DESIGN.md section 1).
+// Names of the patterns with fixed positions (docs/conventions.md section 1).
 const std::vector<std::string>& builtin_pattern_names();
 bool is_builtin_pattern(const std::string& name);
 // Throws std::invalid_argument naming the known patterns when `name` is not one of them.

@@ -31,8 +31,9 @@ inline Normal3 normalized(Normal3 v) {
   return {v.x / len, v.y / len, v.z / len};
 }
 
+// diffuse_scale: see shaders/shading.glsl (AGAA's filtered Lambert term), applied to every light.
 inline Rgb shade_surface(Rgb albedo, Normal3 n, Normal3 view_position, float specular_exponent, float specular_scale,
-                         const std::vector<PointLight>& point_lights = {}) {
+                         float diffuse_scale = 1.0f, const std::vector<PointLight>& point_lights = {}) {
   const Normal3 to_eye = normalized({-view_position.x, -view_position.y, -view_position.z});
   if (dot(n, to_eye) < 0.0f) n = {-n.x, -n.y, -n.z};
   // reflect(-l, n) . to_eye, with reflect(-l, n) = -l + 2 (n . l) n
@@ -44,7 +45,7 @@ inline Rgb shade_surface(Rgb albedo, Normal3 n, Normal3 view_position, float spe
   const Normal3 light = normalized({-0.4f, 0.7f, 0.6f});
   const float diffuse = std::max(dot(n, light), 0.0f);
   const float specular = specular_of(light);
-  const float d = 0.12f + 0.88f * diffuse;
+  const float d = 0.12f + 0.88f * diffuse_scale * diffuse;
   Rgb c{albedo.r * d + specular_scale * specular, albedo.g * d + specular_scale * specular,
         albedo.b * d + specular_scale * specular};
   const std::size_t count = std::min<std::size_t>(point_lights.size(), kMaxScenePointLights);
@@ -54,7 +55,7 @@ inline Rgb shade_surface(Rgb albedo, Normal3 n, Normal3 view_position, float spe
                            p.position.z - view_position.z};
     const float falloff = 1.0f / (1.0f + dot(to_light, to_light) / (p.radius * p.radius));
     const Normal3 l = normalized(to_light);
-    const float dl = std::max(dot(n, l), 0.0f);
+    const float dl = diffuse_scale * std::max(dot(n, l), 0.0f);
     const float sl = specular_of(l);
     c.r += p.colour.r * falloff * (albedo.r * dl + specular_scale * sl);
     c.g += p.colour.g * falloff * (albedo.g * dl + specular_scale * sl);

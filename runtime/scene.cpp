@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <future>
+#include <stdexcept>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -175,6 +177,16 @@ void check_frameable(const Scene& scene, const std::string& what) {
     return;
   }
   throw std::runtime_error(what + ": " + text);
+}
+
+Scene scaled_scene(Scene scene, float factor) {
+  if (!(factor > 0.0f) || !std::isfinite(factor)) throw std::invalid_argument("scene scale must be a finite number > 0");
+  for (SceneVertex& v : scene.vertices) v.position *= factor;
+  if (scene.camera) {
+    scene.camera->eye *= factor, scene.camera->target *= factor;
+    scene.camera->near_plane *= factor, scene.camera->far_plane *= factor;
+  }
+  return scene;
 }
 
 std::string scene_short_name(const std::string& spec) {

@@ -91,6 +91,11 @@ Scene load_scene_within(const std::string& spec, double seconds);
 Scene builtin_scene(const std::string& name);
 Scene load_model(const std::string& path);
 
+// The scene with every position, and its built-in camera (eye, target, near and far), multiplied
+// by `factor` (> 0, finite): the same picture in other units, for the tests that a technique's
+// result does not depend on the asset's units.
+Scene scaled_scene(Scene scene, float factor);
+
 // A short name for reports and file names: "builtin:default" -> "default",
 // "/a/b/Engine.glb" -> "Engine".
 std::string scene_short_name(const std::string& spec);

@@ -1,8 +1,10 @@
 #include "runtime/technique.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
+#include "core/dynamic_coverage.h"
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
@@ -50,15 +52,22 @@ void validate(const TechniqueOptions& o) {
   } else if (o.technique == "agaa") {
     const int n = samples_or(o, 8);
     if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
-    if (!(o.agaa_k > 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length > 0");
+    if (!(o.agaa_k >= 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length >= 0");
+    if (o.agaa_diffuse != "filtered" && o.agaa_diffuse != "plain") bad("agaa --agaa-diffuse must be filtered or plain");
+    if (o.agaa_aggregates < 1 || o.agaa_aggregates > 4) bad("agaa --agaa-aggregates must be 1, 2, 3 or 4");
+    if (!(o.agaa_k_pixels > 0.0) || !std::isfinite(o.agaa_k_pixels)) bad("agaa --agaa-k-pixels must be finite and > 0");
   } else if (o.technique == "dyncov") {
     if (o.samples != 0 && o.samples != 16) bad("dyncov always uses 16 coverage samples");
+    dynamic_coverage_rules(o.rules);
   } else if (o.technique == "msaa") {
+    // llvmpipe's only multisample count is 4; a jittered 8-sample baseline shades every sample,
+    // which is supersampling, so it is named ssaa --samples 8.
     const int n = samples_or(o, 4);
-    if (n != 4 && n != 8) bad("msaa --samples must be 4 or 8, not " + std::to_string(n));
+    if (n == 8) bad("msaa --samples 8: the driver has no 8x MSAA; its jittered stand-in shades every sample: use ssaa --samples 8");
+    if (n != 4) bad("msaa --samples must be 4, not " + std::to_string(n));
   } else if (o.technique == "ssaa") {
     const int n = samples_or(o, 64);
-    if (n != 16 && n != 64) bad("ssaa --samples must be 16 or 64, not " + std::to_string(n));
+    if (n != 8 && n != 16 && n != 64) bad("ssaa --samples must be 8, 16 or 64, not " + std::to_string(n));
   } else if (o.technique == "ssaa-filtered") {
     if (o.samples != 0 && o.samples != 4) bad("ssaa-filtered always uses 4 samples (2x2)");
     if (o.kernel < 1 || o.kernel > 3) bad("ssaa-filtered --kernel must be 1, 2 or 3");
@@ -85,12 +94,20 @@ void validate(const TechniqueOptions& o) {
 }
 
 std::string technique_label(const TechniqueOptions& o) {
-  if (o.technique == "noaa" || o.technique == "fxaa" || o.technique == "dcaa" || o.technique == "dyncov")
-    return o.technique;
+  if (o.technique == "dyncov") return o.rules == TechniqueOptions{}.rules ? "dyncov" : "dyncov " + o.rules;
+  if (o.technique == "noaa" || o.technique == "fxaa" || o.technique == "dcaa") return o.technique;
   if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
   if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
   if (o.technique == "ssaa-filtered") return "ssaa-filtered k" + std::to_string(o.kernel);
-  if (o.technique == "agaa") return "agaa " + std::to_string(samples_or(o, 8)) + "x";
+  if (o.technique == "agaa") {
+    std::string label = "agaa " + std::to_string(samples_or(o, 8)) + "x";
+    std::ostringstream k;
+    if (o.agaa_k > 0.0) k << " k" << o.agaa_k;
+    else if (o.agaa_k_pixels != TechniqueOptions{}.agaa_k_pixels) k << " k" << o.agaa_k_pixels << "px";
+    if (o.agaa_aggregates != TechniqueOptions{}.agaa_aggregates) k << " c" << o.agaa_aggregates;
+    if (o.agaa_diffuse != TechniqueOptions{}.agaa_diffuse) k << " " << o.agaa_diffuse;
+    return label + k.str();
+  }
   const int n = samples_or(o, 8);
   std::string label = "rsaa " + std::to_string(n) + "x ";
   if (n == 4) label += (o.pattern.empty() ? std::string("gl4x") : o.pattern) + " ";
@@ -102,16 +119,21 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
   if (o.technique == "noaa") return make_noaa(width, height);
   if (o.technique == "fxaa") return make_fxaa(width, height);
   if (o.technique == "dcaa") return make_dcaa(width, height);
-  if (o.technique == "dyncov") return make_dynamic_coverage(width, height);
-  if (o.technique == "agaa") return make_agaa(samples_or(o, 8), float(o.agaa_k), width, height);
-  if (o.technique == "ssaa-filtered") return make_filtered_ssaa(o.kernel, width, height);
-  if (o.technique == "msaa") {
-    if (samples_or(o, 4) == 4) return make_hardware_msaa(4, width, height);
-    return make_jittered_supersampling(builtin_pattern("d3d8x").positions, width, height);
+  if (o.technique == "dyncov") return make_dynamic_coverage(dynamic_coverage_rules(o.rules), width, height);
+  if (o.technique == "agaa") {
+    AgaaSettings s;
+    s.k = float(o.agaa_k);
+    s.aggregates = o.agaa_aggregates;
+    s.filtered_diffuse = o.agaa_diffuse == "filtered";
+    return make_agaa(samples_or(o, 8), s, float(o.agaa_k > 0.0 ? 0.0 : o.agaa_k_pixels), width, height);
   }
-  if (o.technique == "ssaa")
+  if (o.technique == "ssaa-filtered") return make_filtered_ssaa(o.kernel, width, height);
+  if (o.technique == "msaa") return make_hardware_msaa(4, width, height);
+  if (o.technique == "ssaa") {
+    if (samples_or(o, 64) == 8) return make_jittered_supersampling(builtin_pattern("d3d8x").positions, width, height);
     return make_jittered_supersampling(stratified_positions(samples_or(o, 64) == 64 ? 8 : 4, 64),
                                        width, height);
+  }
   return make_rsaa(rsaa_settings(o), width, height);
 }
 

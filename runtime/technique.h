@@ -1,5 +1,5 @@
 // Every anti-aliasing technique is a render pass behind this one interface (Falcor-style),
-// chosen by name (DESIGN.md section 4): noaa, msaa, ssaa, rsaa, ...
+// chosen by name (docs/conventions.md section 4): noaa, msaa, ssaa, rsaa, ...
 #pragma once
 
 #include <memory>
@@ -20,7 +20,12 @@ struct TechniqueOptions {
   std::string pattern;               // rsaa 4x: gl4x (default) | d3d4x
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
-  double agaa_k = 0.1;               // agaa: characteristic length of eq. 1, scene units
+  double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
+                                     // paper's 0.1); 0: relative, agaa_k_pixels footprints
+  double agaa_k_pixels = 4.0;        // agaa: k in pixel footprints at the surface
+  int agaa_aggregates = 2;           // agaa: c, 1..4
+  std::string agaa_diffuse = "filtered";  // agaa: filtered (Lambert term scaled by |Na|) | plain
+  std::string rules = "surface";     // dyncov: surface | seed (core/dynamic_coverage.h)
 };
 
 // Options for a technique by name and sample count (0: its default), other fields defaulted.

@@ -7,26 +7,25 @@
 #include "scene_shading.glsl"
 
 uniform usampler2D u_meta;
-layout(location = 0) out vec4 o_albedo0;    // albedo * w, w
-layout(location = 1) out vec4 o_geometry0;  // shading normal * w, view z * w
-layout(location = 2) out vec4 o_albedo1;
-layout(location = 3) out vec4 o_geometry1;
+// Per aggregate a: target 2a = albedo * w, w; target 2a + 1 = shading normal * w, view z * w.
+// Only the first 2c are attached.
+layout(location = 0) out vec4 o_targets[8];
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint me = scene_primitive_order() + 1u;
   uint meta = texelFetch(u_meta, p, 0).x;
-  vec2 w = vec2(0.0);
+  vec4 w = vec4(0.0);
   for (int s = 0; s < u_samples; ++s)
     if (agaa_sample_primitive(p, s) == me) w[agaa_aggregate_of(meta, s)] += 1.0;
-  if (w == vec2(0.0)) discard;
+  if (w == vec4(0.0)) discard;
   w /= float(u_samples);
   vec3 n = scene_shading_normal();
   if (dot(n, -f_in.view_position) < 0.0) n = -n;  // average the sides that are seen
   vec3 albedo = scene_albedo();
   float z = f_in.view_position.z;
-  o_albedo0 = vec4(albedo * w.x, w.x);
-  o_geometry0 = vec4(n * w.x, z * w.x);
-  o_albedo1 = vec4(albedo * w.y, w.y);
-  o_geometry1 = vec4(n * w.y, z * w.y);
+  for (int a = 0; a < 4; ++a) {
+    o_targets[2 * a] = vec4(albedo * w[a], w[a]);
+    o_targets[2 * a + 1] = vec4(n * w[a], z * w[a]);
+  }
 }

@@ -4,10 +4,12 @@
 #include "rsaa_common.glsl"
 #include "shading.glsl"
 
-uniform sampler2D u_albedo0, u_geometry0, u_albedo1, u_geometry1;
+uniform sampler2D u_albedo[4], u_geometry[4];  // per aggregate (agaa_accumulate.frag's targets)
+uniform int u_aggregates;
 uniform mat4 u_inverse_projection;
 uniform vec2 u_viewport;
 uniform vec3 u_background;
+uniform bool u_filtered_diffuse;  // agaa_resolve()'s filtered_diffuse
 out vec4 o_colour;
 
 float toksvig_exponent(float normal_length, float exponent) {
@@ -19,21 +21,22 @@ float toksvig_exponent(float normal_length, float exponent) {
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   vec3 ray = rsaa_view_position(gl_FragCoord.xy, 0.5, u_inverse_projection, u_viewport);
-  vec4 albedo_w[2] = vec4[2](texelFetch(u_albedo0, p, 0), texelFetch(u_albedo1, p, 0));
-  vec4 geometry_w[2] = vec4[2](texelFetch(u_geometry0, p, 0), texelFetch(u_geometry1, p, 0));
   vec3 colour = vec3(0.0);
   float covered = 0.0;
-  for (int a = 0; a < 2; ++a) {
-    float w = albedo_w[a].w;
+  for (int a = 0; a < u_aggregates; ++a) {
+    vec4 albedo_w = texelFetch(u_albedo[a], p, 0), geometry_w = texelFetch(u_geometry[a], p, 0);
+    float w = albedo_w.w;
     if (!(w > 1e-6) || isinf(w)) continue;
-    vec3 albedo = albedo_w[a].rgb / w;
-    vec3 mean = geometry_w[a].xyz / w;
+    vec3 albedo = albedo_w.rgb / w;
+    vec3 mean = geometry_w.xyz / w;
     float len = length(mean);
-    float z = geometry_w[a].w / w;
+    float z = geometry_w.w / w;
     vec3 position = vec3(ray.xy * (ray.z != 0.0 ? z / ray.z : 1.0), z);
     vec3 n = len > 1e-6 ? mean / len : normalize(-position);
     float s = toksvig_exponent(len, SCENE_SPECULAR_EXPONENT);
-    colour += w * shade_surface(albedo, n, position, s, SCENE_SPECULAR_SCALE * (1.0 + s) / (1.0 + SCENE_SPECULAR_EXPONENT));
+    float diffuse_scale = u_filtered_diffuse && len > 1e-6 ? min(len, 1.0) : 1.0;
+    colour += w * shade_surface(albedo, n, position, s, SCENE_SPECULAR_SCALE * (1.0 + s) / (1.0 + SCENE_SPECULAR_EXPONENT),
+                                diffuse_scale);
     covered += w;
   }
   o_colour = vec4(colour + clamp(1.0 - covered, 0.0, 1.0) * u_background, 1.0);

@@ -21,8 +21,8 @@ uvec2 agaa_sample_normal(ivec2 p, int s) { return texelFetch(u_sample_normal, iv
 uint agaa_sample_primitive(ivec2 p, int s) { return texelFetch(u_sample_primitive, ivec3(p, s), 0).x; }
 #endif
 
-// Aggregate metadata, one R32UI per pixel: bit s = sample s sees a surface, bit 8 + s = its
-// aggregate (0 or 1), bits 16-17 = the number of aggregates.
-uint agaa_aggregate_of(uint meta, int s) { return (meta >> uint(8 + s)) & 1u; }
+// Aggregate metadata, one R32UI per pixel: bit s = sample s sees a surface, bits 8 + 2s and
+// 9 + 2s = its aggregate (0..3), bits 24-26 = the number of aggregates.
+uint agaa_aggregate_of(uint meta, int s) { return (meta >> uint(8 + 2 * s)) & 3u; }
 
 #endif  // RSAA_AGAA_SAMPLES_GLSL

@@ -1,8 +1,11 @@
 // Coverage-based techniques, resolve: replays the pixel's fragment list in primitive order
 // (what fragment-shader interlock gives the papers) through the technique's per-pixel update,
 // then resolves. The rules are those of the CPU references, which the tests compare against:
-//   COVERAGE_DCAA    core/dcaa.cpp (Algorithm 1 merge/discard, per-sample depth resolve)
-//   COVERAGE_DYNCOV  core/dynamic_coverage.cpp (two slots, evict the farther)
+//   COVERAGE_DCAA         core/dcaa.cpp (Algorithm 1 merge/discard, per-sample depth resolve)
+//                         with DCAA_MAX_SURFACES surfaces (default 4) and the DcaaSettings
+//                         uniforms; dynamic coverage's surface rules are this with 2 surfaces
+//                         over 16 samples (core/dynamic_coverage.h)
+//   COVERAGE_DYNCOV_SEED  core/dynamic_coverage.cpp, the seed rules (two slots, evict the farther)
 #include "coverage_record.glsl"
 
 layout(r32ui) uniform readonly uimage2D u_heads;
@@ -13,9 +16,15 @@ const int SORT_SLOTS = 32;  // lists up to this length are sorted locally; longe
 
 #ifdef COVERAGE_DCAA
 uniform float u_cos_normal_threshold;
+uniform bool u_per_sample_visibility;  // DcaaSettings::per_sample_visibility
+uniform bool u_merge_hidden;           // DcaaSettings::merge_hidden
+uniform bool u_merge_disjoint_only;    // DcaaSettings::merge_disjoint_only
 uniform int u_coverage_sample_count;
 uniform vec2 u_coverage_samples[64];  // pixel space, y down
-const int MAX_SURFACES = 4;
+#ifndef DCAA_MAX_SURFACES
+#define DCAA_MAX_SURFACES 4
+#endif
+const int MAX_SURFACES = DCAA_MAX_SURFACES;
 
 uvec2 s_coverage[MAX_SURFACES + 1];
 vec3 s_depth[MAX_SURFACES + 1];
@@ -51,6 +60,30 @@ void copy_slot(int to, int from) {
   s_colour[to] = s_colour[from];
 }
 
+bool covers(int i, int s) {
+  return s < 32 ? ((s_coverage[i].x >> uint(s)) & 1u) != 0u : ((s_coverage[i].y >> uint(s - 32)) & 1u) != 0u;
+}
+
+// front_counts() of core/dcaa.cpp over slots 0..n-1: per sample, the covering slot with the
+// smallest depth at the sample (ties: the earlier slot).
+void front_counts(int n, out int counts[MAX_SURFACES + 1]) {
+  for (int i = 0; i < MAX_SURFACES + 1; ++i) counts[i] = 0;
+  for (int s = 0; s < u_coverage_sample_count; ++s) {
+    int front = -1;
+    float front_depth = 0.0;
+    vec2 p = u_coverage_samples[s];
+    for (int i = 0; i < n; ++i) {
+      if (!covers(i, s)) continue;
+      float z = s_depth[i].x + s_depth[i].y * p.x + s_depth[i].z * p.y;
+      if (front < 0 || z < front_depth) {
+        front = i;
+        front_depth = z;
+      }
+    }
+    if (front >= 0) ++counts[front];
+  }
+}
+
 void insert_fragment(CoverageRecord r) {
   // The fragment goes into the spare slot MAX_SURFACES (or s_count) first.
   int in_slot = s_count;
@@ -63,6 +96,7 @@ void insert_fragment(CoverageRecord r) {
   for (int i = 0; i < s_count; ++i) {
     float d = dot(s_normal[i], s_normal[in_slot]);
     if (!(d > u_cos_normal_threshold) || !overlaps(s_depth[i], s_depth[in_slot])) continue;
+    if (u_merge_disjoint_only && any(notEqual(s_coverage[i] & s_coverage[in_slot], uvec2(0u)))) continue;
     float ov = overlap_amount(s_depth[i], s_depth[in_slot]);
     if (best < 0 || d > best_dot || (d == best_dot && ov > best_overlap)) {
       best = i;
@@ -99,9 +133,21 @@ void insert_fragment(CoverageRecord r) {
       smallest_visible = visible;
     }
   }
+  if (u_per_sample_visibility) {
+    int counts[MAX_SURFACES + 1];
+    front_counts(n, counts);
+    smallest = -1;
+    for (int k = n - 1; k >= 0; --k) {  // back to front: ties go to the farther
+      int i = front_to_back[k];
+      if (smallest < 0 || counts[i] < smallest_visible) {
+        smallest = i;
+        smallest_visible = counts[i];
+      }
+    }
+  }
   int target = -1;
   float target_overlap = 0.0;
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < n && (u_merge_hidden || smallest_visible > 0); ++i) {
     if (i == smallest || !overlaps(s_depth[i], s_depth[smallest])) continue;
     float ov = overlap_amount(s_depth[i], s_depth[smallest]);
     if (target < 0 || ov > target_overlap) {
@@ -114,34 +160,20 @@ void insert_fragment(CoverageRecord r) {
 }
 
 vec3 resolve_pixel() {
-  int counts[MAX_SURFACES] = int[MAX_SURFACES](0, 0, 0, 0);
+  int counts[MAX_SURFACES + 1];
+  front_counts(s_count, counts);
   int covered = 0;
-  for (int s = 0; s < u_coverage_sample_count; ++s) {
-    int front = -1;
-    float front_depth = 0.0;
-    vec2 p = u_coverage_samples[s];
-    for (int i = 0; i < s_count; ++i) {
-      bool has = s < 32 ? ((s_coverage[i].x >> uint(s)) & 1u) != 0u : ((s_coverage[i].y >> uint(s - 32)) & 1u) != 0u;
-      if (!has) continue;
-      float z = s_depth[i].x + s_depth[i].y * p.x + s_depth[i].z * p.y;
-      if (front < 0 || z < front_depth) {
-        front = i;
-        front_depth = z;
-      }
-    }
-    if (front >= 0) {
-      ++counts[front];
-      ++covered;
-    }
-  }
   float n = float(u_coverage_sample_count);
   vec3 c = vec3(0.0);
-  for (int i = 0; i < s_count; ++i) c += float(counts[i]) / n * s_colour[i];
+  for (int i = 0; i < s_count; ++i) {
+    c += float(counts[i]) / n * s_colour[i];
+    covered += counts[i];
+  }
   return c + float(u_coverage_sample_count - covered) / n * u_background;
 }
 #endif  // COVERAGE_DCAA
 
-#ifdef COVERAGE_DYNCOV
+#ifdef COVERAGE_DYNCOV_SEED
 vec3 slot_colour[2];
 float slot_depth[2];
 uint slot_mask[2];
@@ -164,10 +196,10 @@ vec3 resolve_pixel() {
   return (float(bitCount(slot_mask[near])) * slot_colour[near] +
           float(bitCount(slot_mask[far] & ~slot_mask[near])) * slot_colour[far]) / total;
 }
-#endif  // COVERAGE_DYNCOV
+#endif  // COVERAGE_DYNCOV_SEED
 
 void main() {
-#ifdef COVERAGE_DYNCOV
+#ifdef COVERAGE_DYNCOV_SEED
   slot_colour[0] = slot_colour[1] = u_background;
   slot_depth[0] = slot_depth[1] = 1.0;
   slot_mask[0] = slot_mask[1] = 0xffffu;

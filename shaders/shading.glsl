@@ -17,23 +17,30 @@ layout(std140, binding = 4) uniform ScenePointLights {
   vec4 colour[SCENE_MAX_POINT_LIGHTS];
 } u_point_lights;
 
-vec3 shade_surface(vec3 albedo, vec3 n, vec3 view_position, float specular_exponent, float specular_scale) {
+// diffuse_scale: AGAA's filtered Lambert term, |Na| for an aggregate whose unit normals average
+// to Na (the mean of n.l is Na.l while no normal faces away from the light); 1 elsewhere.
+vec3 shade_surface(vec3 albedo, vec3 n, vec3 view_position, float specular_exponent, float specular_scale,
+                   float diffuse_scale) {
   vec3 to_eye = normalize(-view_position);
   if (dot(n, to_eye) < 0.0) n = -n;
   const vec3 light = normalize(vec3(-0.4, 0.7, 0.6));
   float diffuse = max(dot(n, light), 0.0);
   float specular = pow(max(dot(reflect(-light, n), to_eye), 0.0), specular_exponent);
-  vec3 colour = albedo * (0.12 + 0.88 * diffuse) + specular_scale * specular;
+  vec3 colour = albedo * (0.12 + 0.88 * diffuse_scale * diffuse) + specular_scale * specular;
   for (int i = 0; i < min(u_point_lights.count, SCENE_MAX_POINT_LIGHTS); ++i) {
     vec3 to_light = u_point_lights.position_radius[i].xyz - view_position;
     float r = u_point_lights.position_radius[i].w;
     float falloff = 1.0 / (1.0 + dot(to_light, to_light) / (r * r));
     vec3 l = normalize(to_light);
-    float d = max(dot(n, l), 0.0);
+    float d = diffuse_scale * max(dot(n, l), 0.0);
     float s = pow(max(dot(reflect(-l, n), to_eye), 0.0), specular_exponent);
     colour += u_point_lights.colour[i].rgb * falloff * (albedo * d + specular_scale * s);
   }
   return colour;
+}
+
+vec3 shade_surface(vec3 albedo, vec3 n, vec3 view_position, float specular_exponent, float specular_scale) {
+  return shade_surface(albedo, n, view_position, specular_exponent, specular_scale, 1.0);
 }
 
 #endif  // RSAA_SHADING_GLSL

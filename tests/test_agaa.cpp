@@ -93,6 +93,33 @@ TEST(Agaa, ResolveOfOneFullAggregateIsTheSurfaceShading) {
   EXPECT_NEAR(h.g, 0.5f * expected.g + 0.5f, 1e-5f);
 }
 
+TEST(Agaa, FilteredDiffuseIsTheMeanLambertTermOfTheAggregate) {
+  // Two facets of a ridge, both lit and both facing the viewer, half the pixel each, no
+  // specular (exponent high enough that the lobe is nowhere near): the exact diffuse of the
+  // pixel is the mean of their two Lambert terms, which the filtered term reproduces and the
+  // normalised mean normal overestimates.
+  const Normal3 light = normalized({-0.4f, 0.7f, 0.6f});
+  const Normal3 n1 = normalized({-0.6f, 0.2f, 0.77f}), n2 = normalized({0.2f, 0.8f, 0.57f});
+  AgaaAggregateSums a;
+  a.albedo = {1, 1, 1};
+  a.normal = {0.5f * (n1.x + n2.x), 0.5f * (n1.y + n2.y), 0.5f * (n1.z + n2.z)};
+  a.view_z = -2.0f;
+  a.weight = 1.0f;
+  const Normal3 ray{0, 0, -1};
+  const float mean_lambert = 0.5f * (std::max(dot(n1, light), 0.0f) + std::max(dot(n2, light), 0.0f));
+  ASSERT_GT(dot(n1, light), 0.0f);
+  ASSERT_GT(dot(n2, light), 0.0f);
+  // Diffuse part of the result: remove the (small, identical) specular of both by comparing the
+  // blue channel of a white albedo against the red channel of a black one.
+  const auto diffuse_of = [&](bool filtered) {
+    AgaaAggregateSums black = a;
+    black.albedo = {0, 0, 0};
+    return agaa_resolve({a}, ray, {0, 0, 0}, filtered).b - agaa_resolve({black}, ray, {0, 0, 0}, filtered).r;
+  };
+  EXPECT_NEAR(diffuse_of(true), 0.12f + 0.88f * mean_lambert, 1e-5f);
+  EXPECT_GT(diffuse_of(false), 0.12f + 0.88f * mean_lambert + 0.01f);
+}
+
 TEST(Agaa, ResolveExtremesStayFinite) {
   AgaaAggregateSums zero_normal;
   zero_normal.albedo = {0.5f, 0.5f, 0.5f};

@@ -1,4 +1,4 @@
-// The conventions of core/conventions.h and DESIGN.md section 1, checked once here.
+// The conventions of core/conventions.h and docs/conventions.md section 1, checked once here.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -31,14 +31,18 @@ struct Rendered {
   DisplayImage gl, cpu;
   std::size_t fragments = 0, longest_list = 0;
   int worst = 0, worst_pixel = -1;
+  int pixels_over_2 = 0;  // pixels with a channel more than 2/255 apart
 };
 
 // Renders `technique` and resolves the same fragment lists on the CPU.
-Rendered render_both(const std::string& technique, const std::string& scene_name, int width, int height) {
+Rendered render_both(const std::string& technique, const std::string& scene_name, int width, int height,
+                     const std::string& rules = TechniqueOptions{}.rules) {
   const Scene scene = load_scene(scene_name);
   const GpuScene gpu(scene);
   const View view = make_view(choose_camera(scene, std::nullopt), width, height);
-  auto t = make_technique(technique_options(technique), width, height);
+  TechniqueOptions options = technique_options(technique);
+  options.rules = rules;
+  auto t = make_technique(options, width, height);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
   t->render(gpu, view, output.get());
   Rendered r;
@@ -55,16 +59,18 @@ Rendered render_both(const std::string& technique, const std::string& scene_name
       for (const CoverageFragment& f : pixels[i]) pixel.insert(f);
       cpu.pixels[i] = pixel.resolve(lists->lut().pattern(), background);
     } else {
-      DynamicCoveragePixel pixel(background);
+      DynamicCoveragePixel pixel(background, dynamic_coverage_rules(rules));
       for (const CoverageFragment& f : pixels[i]) pixel.insert(f);
       cpu.pixels[i] = pixel.resolve();
     }
   }
   r.cpu = to_display(cpu);
   for (const auto& list : pixels) r.longest_list = std::max(r.longest_list, list.size());
-  for (std::size_t i = 0; i < r.gl.rgb.size(); ++i) {
-    const int d = std::abs(int(r.gl.rgb[i]) - int(r.cpu.rgb[i]));
-    if (d > r.worst) r.worst = d, r.worst_pixel = int(i / 3);
+  for (std::size_t p = 0; p < r.gl.rgb.size() / 3; ++p) {
+    int d = 0;
+    for (std::size_t c = 3 * p; c < 3 * p + 3; ++c) d = std::max(d, std::abs(int(r.gl.rgb[c]) - int(r.cpu.rgb[c])));
+    if (d > r.worst) r.worst = d, r.worst_pixel = int(p);
+    if (d > 2) ++r.pixels_over_2;
   }
   return r;
 }
@@ -80,18 +86,24 @@ TEST_F(CoverageGl, DcaaEqualsItsCpuReferenceOnTheSameFragments) {
 TEST_F(CoverageGl, ListsLongerThanTheLocalSortAreReplayedInOrderToo) {
   // The whole default scene in 8x6 pixels: lists far longer than the 32 records the resolve
   // sorts locally, replayed by its scanning path.
-  for (const char* technique : {"dcaa", "dyncov"}) {
-    const Rendered r = render_both(technique, "builtin:default", 8, 6);
+  // Over a hundred merges a pixel, a choice between two slots whose normals are equal to 1e-7
+  // can go either way between the GL and CPU floats (seen once in 48 pixels with the surface
+  // rules): one pixel may differ more, by less than 8/255.
+  for (const auto& [technique, rules] : {std::pair{"dcaa", "surface"}, std::pair{"dyncov", "surface"},
+                                         std::pair{"dyncov", "seed"}}) {
+    const Rendered r = render_both(technique, "builtin:default", 8, 6, rules);
     EXPECT_GT(r.longest_list, 32u);
-    EXPECT_LE(r.worst, 2) << technique << ": pixel " << r.worst_pixel % 8 << ", " << r.worst_pixel / 8;
+    EXPECT_LE(r.pixels_over_2, 1) << technique << " " << rules;
+    EXPECT_LT(r.worst, 8) << technique << " " << rules << ": pixel " << r.worst_pixel % 8 << ", " << r.worst_pixel / 8;
   }
 }
 
 TEST_F(CoverageGl, DynamicCoverageEqualsItsCpuReferenceOnTheSameFragments) {
-  for (const char* scene : {"builtin:default", "builtin:interpenetrating", "builtin:star"}) {
-    const Rendered r = render_both("dyncov", scene, 96, 72);
-    EXPECT_LE(r.worst, 2) << scene << ": pixel " << r.worst_pixel % 96 << ", " << r.worst_pixel / 96;
-  }
+  for (const char* rules : {"surface", "seed"})
+    for (const char* scene : {"builtin:default", "builtin:interpenetrating", "builtin:star"}) {
+      const Rendered r = render_both("dyncov", scene, 96, 72, rules);
+      EXPECT_LE(r.worst, 2) << rules << " " << scene << ": pixel " << r.worst_pixel % 96 << ", " << r.worst_pixel / 96;
+    }
 }
 
 }  // namespace
@@ -139,31 +151,33 @@ namespace {
 // AGAA 8x: the GL aggregate metadata against define_aggregates() on the read-back samples, and the
 // GL image against agaa_resolve() on the read-back aggregate sums.
 TEST_F(CoverageGl, AgaaEqualsItsCpuReferenceOnTheSameSamples) {
-  for (const char* name : {"builtin:default", "builtin:fence"}) {
+  for (const auto& [name, c] : {std::pair{"builtin:default", 2}, std::pair{"builtin:fence", 4}}) {
     const Scene scene = load_scene(name);
     const GpuScene gpu(scene);
     const int w = 96, h = 72;
     const View view = make_view(choose_camera(scene, std::nullopt), w, h);
-    auto t = make_technique(technique_options("agaa", 8), w, h);
+    TechniqueOptions options = technique_options("agaa", 8);
+    options.agaa_aggregates = c;
+    auto t = make_technique(options, w, h);
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, w, h);
     t->render(gpu, view, output.get());
     const DisplayImage gl_image = to_display(read_back_image(output.get(), w, h));
     const AgaaFrameData data = read_back_agaa(*t, view);
     const glm::vec3 bg = gpu.background();
     Image cpu(w, h);
-    int meta_mismatches = 0, two_aggregates = 0;
+    int meta_mismatches = 0, several_aggregates = 0;
     for (int i = 0; i < w * h; ++i) {
       const std::vector<AgaaSample> samples(data.samples_of_pixels.begin() + i * 8, data.samples_of_pixels.begin() + (i + 1) * 8);
-      const AgaaClusters c = define_aggregates(samples, {});
-      std::uint32_t meta = std::uint32_t(c.count) << 16;
+      const AgaaClusters clusters = define_aggregates(samples, data.settings);
+      std::uint32_t meta = std::uint32_t(clusters.count) << 24;
       for (int s = 0; s < 8; ++s)
-        if (c.aggregate[s] >= 0) meta |= (1u << s) | (std::uint32_t(c.aggregate[s]) << (8 + s));
+        if (clusters.aggregate[s] >= 0) meta |= (1u << s) | (std::uint32_t(clusters.aggregate[s]) << (8 + 2 * s));
       meta_mismatches += meta != data.meta[i];
-      two_aggregates += c.count == 2;
-      cpu.pixels[i] = agaa_resolve({data.aggregates[2 * i], data.aggregates[2 * i + 1]}, data.pixel_rays[i],
-                                   {bg.r, bg.g, bg.b});
+      several_aggregates += clusters.count == c;
+      cpu.pixels[i] = agaa_resolve({data.aggregates.begin() + c * i, data.aggregates.begin() + c * (i + 1)},
+                                   data.pixel_rays[i], {bg.r, bg.g, bg.b}, data.settings.filtered_diffuse);
     }
-    EXPECT_GT(two_aggregates, 50) << name;                 // edges make two aggregates
+    EXPECT_GT(several_aggregates, 50) << name;             // edges make c aggregates
     EXPECT_LE(meta_mismatches, w * h / 200) << name;       // float ties may differ
     const DisplayImage cpu_image = to_display(cpu);
     int worst = 0;
@@ -183,6 +197,41 @@ TEST_F(CoverageGl, AgaaBeatsNoAaWithHardwareAndJitteredSamples) {
   for (int n : {4, 8}) {
     const double agaa = compare_images(display(technique_options("agaa", n)), reference).psnr_db;
     EXPECT_GT(agaa, noaa + 3.0) << n;
+  }
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// A model in other units gives the same image: the scene and its camera scaled by 10^3 and
+// 10^-3 against the unscaled render, every technique (AGAA's k is relative to the view for this).
+// The seed's literal dynamic coverage rules are left out: they compare fragments' depths at the
+// pixel centre strictly, and neighbouring triangles of one surface tie there to the last bits,
+// which the scale changes (measured 38-39 dB at 160x120). The surface rules pass with less
+// margin (53-55 dB; 49 dB at 96x72, where many triangles share a pixel and a sample flipping
+// at an edge changes which fragments merge).
+TEST_F(CoverageGl, EveryTechniqueRendersAScaledSceneTheSame) {
+  const Scene scene = load_scene("builtin:default");
+  std::vector<TechniqueOptions> techniques;
+  for (const std::string& name : technique_names())
+    if (name != "rsaa") techniques.push_back(technique_options(name));
+  techniques.push_back(technique_options("agaa", 4));
+  techniques.push_back(technique_options("msaa", 4));
+  techniques.push_back(technique_options("ssaa", 8));
+  for (const TechniqueOptions& o : rsaa_variants())
+    if (o.auth == 0 || o.samples == 4) techniques.push_back(o);
+  const auto render = [&](const Scene& s, const TechniqueOptions& o) {
+    const GpuScene gpu(s);
+    return to_display(render_frame(gpu, choose_camera(s, std::nullopt), o, 160, 120));
+  };
+  for (const TechniqueOptions& o : techniques) {
+    const DisplayImage unscaled = render(scene, o);
+    for (float factor : {1e3f, 1e-3f})
+      EXPECT_GE(compare_images(render(scaled_scene(scene, factor), o), unscaled).psnr_db, 50.0)
+          << technique_label(o) << " at scale " << factor;
   }
 }
 

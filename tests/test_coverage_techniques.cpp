@@ -206,7 +206,7 @@ TEST(WorkedExample, DynamicCoverageTripleInEitherOrder) {
   EXPECT_EQ(similar_count(purple.coverage), 8);
   EXPECT_EQ(similar_count(green.coverage & ~purple.coverage), 5);
   for (bool green_first : {true, false}) {
-    DynamicCoveragePixel pixel(kWhite);
+    DynamicCoveragePixel pixel(kWhite, DynamicCoverageRules::Seed);
     pixel.insert(green_first ? green : purple);
     pixel.insert(green_first ? purple : green);
     expect_display(pixel.resolve(), 217, 219, 225);
@@ -229,7 +229,7 @@ TEST(WorkedExample, DcaaIsCloseToTheCorrectValue) {
 // ---- Dynamic coverage: evict rules -----------------------------------------------------
 
 TEST(DynamicCoverage, EvictsTheFartherSlot) {
-  DynamicCoveragePixel p({0, 0, 0});
+  DynamicCoveragePixel p({0, 0, 0}, DynamicCoverageRules::Seed);
   EXPECT_TRUE(p.insert(fragment(0, 0x00FF, 0.5f, 0, {1, 0, 0})));  // both slots at 1: slot 0
   EXPECT_EQ(p.mask[0], 0x00FF);
   EXPECT_TRUE(p.insert(fragment(1, 0x0FF0, 0.7f, 0, {0, 1, 0})));  // slot 1 (at 1) is farther
@@ -245,7 +245,7 @@ TEST(DynamicCoverage, EvictsTheFartherSlot) {
 }
 
 TEST(DynamicCoverage, TiesZeroCoverageAndNonFiniteInput) {
-  DynamicCoveragePixel p({0.5f, 0.5f, 0.5f});
+  DynamicCoveragePixel p({0.5f, 0.5f, 0.5f}, DynamicCoverageRules::Seed);
   EXPECT_FALSE(p.insert(fragment(0, 0, 0.2f, 0, {1, 0, 0})));            // no coverage sample: ignored
   EXPECT_FALSE(p.insert(fragment(1, 0xFF, std::nanf(""), 0, {1, 0, 0})));
   EXPECT_FALSE(p.insert(fragment(2, 0xFF, 0.2f, 0, {std::nanf(""), 0, 0})));
@@ -260,10 +260,160 @@ TEST(DynamicCoverage, TiesZeroCoverageAndNonFiniteInput) {
   p.mask[0] = p.mask[1] = 0;
   EXPECT_TRUE(finite(p.resolve()));
   // Many overlaps with equal coverage: the last two that were closer than a slot win.
-  DynamicCoveragePixel many({0, 0, 0});
+  DynamicCoveragePixel many({0, 0, 0}, DynamicCoverageRules::Seed);
   for (int i = 0; i < 10; ++i) many.insert(fragment(i, 0x0F0F, 0.9f - 0.05f * i, 0, {float(i), 0, 0}));
   EXPECT_FLOAT_EQ(std::max(many.colour[0].r, many.colour[1].r), 9.0f);
   EXPECT_FLOAT_EQ(std::min(many.colour[0].r, many.colour[1].r), 8.0f);
+}
+
+
+// ---- Dynamic coverage: surface rules -----------------------------------------------------
+
+TEST(DynamicCoverageSurface, TwoTrianglesOfOneSurfaceShareASlotAndTheBackgroundStays) {
+  // A tessellated surface: three triangles of one plane (same normal, continuous depth) cover
+  // 12 of 16 samples; the seed rules lose the background and stretch the last two triangles over
+  // all 16 samples, the surface rules keep one merged slot and the background on the other 4.
+  const Rgb grey{0.5f, 0.5f, 0.5f}, black{0, 0, 0};
+  const CoverageFragment a = fragment(0, 0x000F, 0.50f, 0, grey, 0.01f), b = fragment(1, 0x00F0, 0.50f, 0, grey, 0.01f),
+                         c = fragment(2, 0x0F00, 0.50f, 0, grey, 0.01f);
+  DynamicCoveragePixel surface(black, DynamicCoverageRules::Surface), seed(black, DynamicCoverageRules::Seed);
+  for (const CoverageFragment& f : {a, b, c}) surface.insert(f), seed.insert(f);
+  ASSERT_EQ(surface.surfaces().size(), 1u);
+  EXPECT_EQ(surface.surfaces()[0].coverage, 0x0FFFu);
+  EXPECT_FLOAT_EQ(surface.resolve().r, 0.5f * 12.0f / 16.0f);  // the exact coverage-weighted value
+  EXPECT_FLOAT_EQ(seed.resolve().r, 0.5f);                     // background lost
+}
+
+TEST(DynamicCoverageSurface, DifferentSurfacesTakeTheEmptySlotsThenTheLeastVisibleGoes) {
+  const Rgb black{0, 0, 0};
+  DynamicCoveragePixel p(black, DynamicCoverageRules::Surface);
+  EXPECT_TRUE(p.insert(fragment(0, 0x00FF, 0.3f, 0.0f, {1, 0, 0})));       // front, 8 samples
+  EXPECT_TRUE(p.insert(fragment(1, 0x3FF0, 0.6f, 1.0f, {0, 1, 0})));       // behind: 6 visible
+  ASSERT_EQ(p.surfaces().size(), 2u);
+  // A third surface far behind both with 2 visible samples: the least visible, nothing overlaps
+  // its depth: dropped.
+  EXPECT_TRUE(p.insert(fragment(2, 0xC00F, 0.9f, 0.5f, {0, 0, 1})));
+  ASSERT_EQ(p.surfaces().size(), 2u);
+  // Resolve: front 8/16 red, the back surface's 6 samples not under it green, 2 background.
+  EXPECT_FLOAT_EQ(p.resolve().b, 0.0f);
+  EXPECT_FLOAT_EQ(p.resolve().r, 0.5f);
+  EXPECT_FLOAT_EQ(p.resolve().g, 6.0f / 16.0f);
+  // A one-sample fragment in front of both: counted per sample it shows 1 sample against the
+  // back surface's 5, so it is the one that goes (DCAA's coarse rule never drops the front-most).
+  EXPECT_TRUE(p.insert(fragment(3, 0x0100, 0.1f, 2.0f, {0, 0, 1})));
+  ASSERT_EQ(p.surfaces().size(), 2u);
+  EXPECT_FLOAT_EQ(p.resolve().b, 0.0f);
+  EXPECT_FLOAT_EQ(p.resolve().r, 0.5f);
+  EXPECT_FLOAT_EQ(p.resolve().g, 6.0f / 16.0f);
+}
+
+TEST(DynamicCoverageSurface, AHiddenFragmentDrawnFirstGivesWayAndACreaseMergesIntoItsNeighbour) {
+  const Rgb black{0, 0, 0};
+  DynamicCoveragePixel p(black, DynamicCoverageRules::Surface);
+  p.insert(fragment(0, 0x0FFF, 0.9f, 0.0f, {0, 0, 1}));                 // hidden by what follows
+  p.insert(fragment(1, 0x00FF, 0.2f, 0.0f, {1, 0, 0}, 0.02f));           // front surface
+  p.insert(fragment(2, 0x0F00, 0.2f, 0.6f, {0, 1, 0}, 0.02f));           // a crease: normal 34 deg apart
+  // Full: the hidden blue one has no visible sample left and goes; the crease's two facets stay.
+  ASSERT_EQ(p.surfaces().size(), 2u);
+  EXPECT_FLOAT_EQ(p.resolve().b, 0.0f);
+  EXPECT_FLOAT_EQ(p.resolve().r, 0.5f);
+  EXPECT_FLOAT_EQ(p.resolve().g, 0.25f);
+  // A third facet of the crease (its own normal) covering 2 more samples: merged into the
+  // overlapping facet instead of dropped, so its samples stay covered (no background dot).
+  p.insert(fragment(3, 0x3000, 0.2f, -0.6f, {1, 1, 1}, 0.02f));
+  ASSERT_EQ(p.surfaces().size(), 2u);
+  EXPECT_EQ(p.surfaces()[0].coverage | p.surfaces()[1].coverage, 0x3FFFu);
+}
+
+TEST(DynamicCoverageSurface, ZeroCoverageNonFiniteAndEmpty) {
+  const Rgb clear{0.25f, 0.5f, 0.75f};
+  DynamicCoveragePixel p(clear, DynamicCoverageRules::Surface);
+  EXPECT_FLOAT_EQ(p.resolve().b, 0.75f);                                          // no fragment: the background
+  EXPECT_FALSE(p.insert(fragment(0, 0x10000, 0.2f, 0, {1, 0, 0})));              // covers none of the 16 samples
+  EXPECT_FALSE(p.insert(fragment(1, 0xFF, std::nanf(""), 0, {1, 0, 0})));
+  EXPECT_FALSE(p.insert(fragment(2, 0xFF, 0.2f, 0, {0, std::nanf(""), 0})));
+  EXPECT_TRUE(p.surfaces().empty());
+  // Everything at one depth with one normal: one surface, the colours averaged by coverage.
+  for (int i = 0; i < 16; ++i) p.insert(fragment(3 + i, Mask(1) << i, 0.5f, 0, {float(i % 2), 0, 0}));
+  ASSERT_EQ(p.surfaces().size(), 1u);
+  EXPECT_NEAR(p.resolve().r, 0.5f, 1e-6f);
+  EXPECT_TRUE(finite(p.resolve()));
+  EXPECT_THROW(dynamic_coverage_rules("evict"), std::invalid_argument);
+}
+
+TEST(WorkedExample, DynamicCoverageSurfaceRulesKeepTheBackground) {
+  // The seed's example under the surface rules: the purple and green triangles are different
+  // surfaces (different depths), so both keep a slot and the 3 samples neither covers show the
+  // white background: 8 purple + 5 green + 3 white over 16, closer to the area-weighted value
+  // (222.4, 223.9, 229.2) than the seed's (217, 219, 225).
+  const HalfPlaneLut lut(builtin_pattern("d3d16x"));
+  DynamicCoveragePixel pixel(kWhite, DynamicCoverageRules::Surface);
+  pixel.insert(triangle_fragment(lut, kGreen, 0, 0.6f, kGreenColour));
+  pixel.insert(triangle_fragment(lut, kPurple, 1, 0.3f, kPurpleColour));
+  const Rgb c = pixel.resolve();
+  EXPECT_NEAR(c.r, (8 * kPurpleColour.r + 5 * kGreenColour.r + 3 * kWhite.r) / 16, 1e-3);
+  EXPECT_NEAR(c.g, (8 * kPurpleColour.g + 5 * kGreenColour.g + 3 * kWhite.g) / 16, 1e-3);
+  EXPECT_NEAR(c.b, (8 * kPurpleColour.b + 5 * kGreenColour.b + 3 * kWhite.b) / 16, 1e-3);
+}
+
+
+TEST(DynamicCoverageSurface, APlaneCrossingAnotherWinsTheSamplesWhereItIsInFront) {
+  // A fin on a body: the body at depth 0.5 covers all 16 samples; the fin's plane is in front on
+  // the left (x < -1/6) and, extrapolated to the centre, behind (0.55). It covers the samples
+  // left of x = -0.2. Per sample the fin shows on all of them; the seed orders the two slots by
+  // their depth at the centre and gives every sample to the body.
+  const SamplePattern& pattern = dynamic_coverage_pattern();
+  Mask left = 0;
+  for (int s = 0; s < pattern.size(); ++s)
+    if (pattern.positions[s].x < -0.2) left |= Mask(1) << s;
+  ASSERT_GT(similar_count(left), 0);
+  const CoverageFragment body = fragment(0, 0xFFFF, 0.5f, 0.0f, {1, 0, 0});
+  const CoverageFragment fin = fragment(1, left, 0.55f, 1.2f, {0, 1, 0}, 0.3f);
+  DynamicCoveragePixel surface({0, 0, 0}, DynamicCoverageRules::Surface), seed({0, 0, 0}, DynamicCoverageRules::Seed);
+  for (const CoverageFragment& f : {body, fin}) surface.insert(f), seed.insert(f);
+  EXPECT_FLOAT_EQ(surface.resolve().g, float(similar_count(left)) / 16.0f);
+  EXPECT_FLOAT_EQ(seed.resolve().g, 0.0f);
+}
+
+TEST(DynamicCoverageSurface, AHiddenSurfaceIsDroppedNotBlendedIntoAVisibleOne) {
+  // Both slots full with visible surfaces; a third one, behind the front slot everywhere it
+  // covers but overlapping its depth interval (the far side of a thin fin), shows no sample.
+  // DCAA's paper rule merges it into the front slot (its colour bleeds in); the surface rules
+  // drop it.
+  const auto run = [](DcaaSettings settings) {
+    DcaaPixel p(settings, &dynamic_coverage_pattern());
+    p.insert(fragment(0, 0x00FF, 0.50f, 0.0f, {1, 0, 0}, 0.02f));
+    p.insert(fragment(1, 0xFF00, 0.80f, 1.0f, {0, 1, 0}));
+    p.insert(fragment(2, 0x000F, 0.51f, kPi, {0, 0, 1}, 0.02f));  // facing away, 0.01 behind
+    return p.resolve(dynamic_coverage_pattern(), {0, 0, 0});
+  };
+  DcaaSettings paper;
+  paper.max_surfaces = 2;
+  EXPECT_GT(run(paper).b, 0.0f);
+  EXPECT_FLOAT_EQ(run(dynamic_coverage_surface_settings()).b, 0.0f);
+  EXPECT_FLOAT_EQ(run(dynamic_coverage_surface_settings()).r, 0.5f);
+  EXPECT_THROW(DcaaPixel{dynamic_coverage_surface_settings()}, std::invalid_argument);  // needs the samples
+}
+
+
+TEST(DynamicCoverageSurface, CrossingLayersAtASmallAngleStayApart) {
+  // Two planes 6 degrees apart crossing at the pixel centre, both covering all 16 samples: the
+  // normal and depth tests alone call them one surface (DCAA merges them and the crossing line
+  // is lost); they cover the same samples, so the surface rules keep two slots and the resolve
+  // gives each the samples where it is in front.
+  const CoverageFragment a = fragment(0, 0xFFFF, 0.5f, 0.0f, {1, 0, 0}, 0.01f);
+  const CoverageFragment b = fragment(1, 0xFFFF, 0.5f, 0.1f, {0, 1, 0}, -0.01f);
+  DcaaSettings paper;
+  paper.max_surfaces = 2;
+  DcaaPixel merged(paper);
+  for (const CoverageFragment& f : {a, b}) merged.insert(f);
+  EXPECT_EQ(merged.surfaces().size(), 1u);
+  DynamicCoveragePixel p({0, 0, 0}, DynamicCoverageRules::Surface);
+  for (const CoverageFragment& f : {a, b}) p.insert(f);
+  ASSERT_EQ(p.surfaces().size(), 2u);
+  int right = 0;  // samples at x > 0, where b (falling with x) is in front
+  for (const Vec2& s : dynamic_coverage_pattern().positions) right += s.x > 0;
+  EXPECT_FLOAT_EQ(p.resolve().g, float(right) / 16.0f);
 }
 
 }  // namespace

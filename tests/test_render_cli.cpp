@@ -63,7 +63,9 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
            {"--technique rsaa --auth 3", "--auth"},
            {"--technique rsaa --samples 16", "--samples must be 4 or 8"},
            {"--technique rsaa --similarity normals", "--similarity"},
-           {"--technique ssaa --samples 8", "16 or 64"},
+           {"--technique ssaa --samples 4", "8, 16 or 64"},
+           {"--technique msaa --samples 8", "use ssaa --samples 8"},
+           {"--technique dyncov --rules evict", "--rules must be seed or surface"},
            {"--technique rsaa --code-bits 12", "--code-bits"},
        }) {
     const std::string size = bad.args.find("--width") == std::string::npos ? "--width 32 --height 24 " : "";

@@ -157,9 +157,9 @@ TEST(Trainer, RejectsBadOptions) {
   o.two_line_weight = std::nan("");
   EXPECT_THROW(train_offset_table(o), std::invalid_argument);
   o.two_line_weight = 0.5;
-  std::vector<Vec2> seventeen;  // distinct: coincident positions are refused on their own
-  for (int i = 0; i < 17; ++i) seventeen.push_back({i / 34.0, 0.0});
-  o.pattern = pattern_from_positions("custom-17", seventeen);
+  std::vector<Vec2> seventeen;
+  for (int i = 0; i < 17; ++i) seventeen.push_back({-0.4 + 0.05 * i, 0.03 * (i % 5)});
+  o.pattern = pattern_from_positions("custom-17", seventeen);  // more samples than a table takes
   EXPECT_THROW(train_offset_table(o), std::invalid_argument);
 }
 

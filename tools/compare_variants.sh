@@ -14,7 +14,7 @@ mkdir -p "$out"
 rsaa=./build/rsaa
 
 techniques=(
-  "noaa" "msaa --samples 4" "msaa --samples 8" "ssaa --samples 16" "dyncov" "dcaa" "agaa --samples 4" "agaa --samples 8"
+  "noaa" "msaa --samples 4" "ssaa --samples 8" "ssaa --samples 16" "dyncov" "dcaa" "agaa --samples 4" "agaa --samples 8"
 )
 for samples in 4 8; do
   for similarity in sadp depth; do

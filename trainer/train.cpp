@@ -184,7 +184,7 @@ TrainReport train_offset_table(const TrainOptions& options, const TrainProgress&
       {"cases", options.cases},
       {"seed", options.seed},
       {"fit", to_string(options.fit)},
-      {"case_distribution", "DESIGN.md section 2; even case indices one-line, odd two-line"},
+      {"case_distribution", "docs/conventions.md section 2; even case indices one-line, odd two-line"},
       {"masks_one_line", report.masks_by_source[0]},
       {"masks_two_line", report.masks_by_source[1]},
       {"masks_fallback", report.masks_by_source[2]},

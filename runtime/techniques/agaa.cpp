@@ -1,5 +1,5 @@
-// agaa --samples 4|8 [--agaa-k 0.1]: Aggregate G-Buffer Anti-Aliasing (seed 001) with c = 2
-// aggregates. (1) Visibility pre-pass: per sample depth, facet normal and primitive id, from
+// agaa --samples 4|8 [--agaa-aggregates 1-4] [--agaa-k-pixels 4 | --agaa-k 0.1]: Aggregate
+// G-Buffer Anti-Aliasing (seed 001) with c aggregates (2 by default). (1) Visibility pre-pass: per sample depth, facet normal and primitive id, from
 // hardware 4x MSAA or 8 jittered single-sample passes (the d3d8x positions). (2) Aggregate
 // definition: a fullscreen pass clusters each pixel's samples (core/agaa.h). (3) Aggregate
 // G-buffer: the scene drawn again with conservative expansion; each fragment blends its shading
@@ -17,12 +17,12 @@
 namespace rsaa {
 namespace {
 
-constexpr int kAggregates = 2;
-
 class Agaa : public Technique {
  public:
-  Agaa(int samples, float k, int width, int height)
+  Agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height)
       : samples_(samples),
+        settings_(settings),
+        k_pixels_(k_pixels),
         pattern_(samples == 4 ? query_gl_sample_pattern(4) : builtin_pattern("d3d8x")),
         meta_(gl::make_texture_2d(GL_R32UI, width, height)),
         define_(make_fullscreen_program("agaa_define.frag", defines())),
@@ -45,9 +45,12 @@ class Agaa : public Technique {
             gl::make_framebuffer({{0}, {normal_.get(), s}, {primitive_.get(), s}}, {depth_.get(), s}));
     }
     define_target_ = gl::make_framebuffer({{meta_.get()}});
-    for (int i = 0; i < 2 * kAggregates; ++i) aggregate_.push_back(gl::make_texture_2d(GL_RGBA32F, width, height));
-    accumulate_target_ = gl::make_framebuffer(
-        {{aggregate_[0].get()}, {aggregate_[1].get()}, {aggregate_[2].get()}, {aggregate_[3].get()}});
+    std::vector<gl::Attachment> targets;
+    for (int i = 0; i < 2 * settings.aggregates; ++i) {
+      aggregate_.push_back(gl::make_texture_2d(GL_RGBA32F, width, height));
+      targets.push_back({aggregate_.back().get()});
+    }
+    accumulate_target_ = gl::make_framebuffer(targets);
 
     std::vector<float> offsets;  // window space: pixel-space y flipped
     for (const Vec2& s : pattern_.positions) offsets.insert(offsets.end(), {float(s.x), float(-s.y)});
@@ -59,12 +62,17 @@ class Agaa : public Technique {
     }
     GLuint p = define_.get();
     glProgramUniform2fv(p, glGetUniformLocation(p, "u_sample_offsets"), samples, offsets.data());
-    glProgramUniform1f(p, glGetUniformLocation(p, "u_k"), k);
-    glProgramUniform1f(p, glGetUniformLocation(p, "u_min_separation"), AgaaSettings{}.min_separation);
+    glProgramUniform1f(p, glGetUniformLocation(p, "u_k"), settings.k);
+    glProgramUniform1f(p, glGetUniformLocation(p, "u_min_separation"), settings.min_separation);
     glProgramUniform1i(accumulate_.get(), glGetUniformLocation(accumulate_.get(), "u_meta"), 4);
     p = resolve_.get();
-    const char* names[] = {"u_albedo0", "u_geometry0", "u_albedo1", "u_geometry1"};
-    for (int i = 0; i < 4; ++i) glProgramUniform1i(p, glGetUniformLocation(p, names[i]), 5 + i);
+    glProgramUniform1i(p, glGetUniformLocation(p, "u_aggregates"), settings.aggregates);
+    glProgramUniform1i(define_.get(), glGetUniformLocation(define_.get(), "u_aggregates"), settings.aggregates);
+    for (int a = 0; a < 4; ++a) {  // unused samplers of the array still need distinct units
+      const int unit = 5 + 2 * std::min(a, settings.aggregates - 1);
+      glProgramUniform1i(p, glGetUniformLocation(p, ("u_albedo[" + std::to_string(a) + "]").c_str()), unit);
+      glProgramUniform1i(p, glGetUniformLocation(p, ("u_geometry[" + std::to_string(a) + "]").c_str()), unit + 1);
+    }
     gl::check("agaa setup");
   }
 
@@ -89,6 +97,8 @@ class Agaa : public Technique {
     timer_.begin("aggregates");
     bind_samples();
     GLuint p = define_.get();
+    settings_.k_per_depth = k_pixels_ > 0.0f ? agaa_k_per_depth(k_pixels_, view.projection[1][1], view.height) : 0.0f;
+    glProgramUniform1f(p, glGetUniformLocation(p, "u_k_per_depth"), settings_.k_per_depth);
     glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "u_inverse_projection"), 1, GL_FALSE,
                               glm::value_ptr(inverse_projection));
     glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(view.width), float(view.height));
@@ -100,7 +110,7 @@ class Agaa : public Technique {
 
     timer_.begin("main");
     const GLfloat none[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(accumulate_target_.get(), GL_COLOR, i, none);
+    for (int i = 0; i < int(aggregate_.size()); ++i) glClearNamedFramebufferfv(accumulate_target_.get(), GL_COLOR, i, none);
     glBindTextureUnit(4, meta_.get());
     glProgramUniform2f(accumulate_.get(), glGetUniformLocation(accumulate_.get(), "u_viewport"), float(view.width),
                        float(view.height));
@@ -113,12 +123,13 @@ class Agaa : public Technique {
 
     timer_.begin("resolve");
     p = resolve_.get();
-    for (int i = 0; i < 4; ++i) glBindTextureUnit(5 + i, aggregate_[i].get());
+    for (int i = 0; i < int(aggregate_.size()); ++i) glBindTextureUnit(5 + i, aggregate_[i].get());
     glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "u_inverse_projection"), 1, GL_FALSE,
                               glm::value_ptr(inverse_projection));
     glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(view.width), float(view.height));
     const glm::vec3 bg = scene.background();
     glProgramUniform3f(p, glGetUniformLocation(p, "u_background"), bg.r, bg.g, bg.b);
+    glProgramUniform1i(p, glGetUniformLocation(p, "u_filtered_diffuse"), settings_.filtered_diffuse);
     glBindFramebuffer(GL_FRAMEBUFFER, output_target_.get({{output}}));
     glUseProgram(p);
     draw_fullscreen_triangle();
@@ -128,7 +139,7 @@ class Agaa : public Technique {
   }
 
   // Per sample: depth 4 + normal 4 + primitive id 4; per aggregate 2 x RGBA32F; metadata 4.
-  double bytes_per_pixel() const override { return 12.0 * samples_ + 32.0 * kAggregates + 4.0; }
+  double bytes_per_pixel() const override { return 12.0 * samples_ + 32.0 * settings_.aggregates + 4.0; }
 
   AgaaFrameData read_back(const View& view) const {
     if (samples_ == 4) throw std::logic_error("agaa: multisampled buffers cannot be read back");
@@ -142,8 +153,9 @@ class Agaa : public Technique {
     glGetTextureImage(primitive_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(primitive.size() * 4),
                       primitive.data());
     glGetTextureImage(meta_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(meta.size() * 4), meta.data());
-    std::vector<std::vector<float>> sums(4, std::vector<float>(pixels * 4));
-    for (int i = 0; i < 4; ++i)
+    const int c = settings_.aggregates;
+    std::vector<std::vector<float>> sums(2 * c, std::vector<float>(pixels * 4));
+    for (int i = 0; i < 2 * c; ++i)
       glGetTextureImage(aggregate_[i].get(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels * 16), sums[i].data());
     gl::check("agaa read back");
 
@@ -155,9 +167,10 @@ class Agaa : public Technique {
     };
     AgaaFrameData out;
     out.width = w, out.height = h, out.samples = n;
+    out.settings = settings_;
     out.samples_of_pixels.resize(pixels * n);
     out.meta.resize(pixels);
-    out.aggregates.resize(pixels * 2);
+    out.aggregates.resize(pixels * c);
     out.pixel_rays.resize(pixels);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
@@ -173,10 +186,10 @@ class Agaa : public Technique {
           sample.normal = {nx, ny, std::sqrt(std::max(0.0f, 1.0f - nx * nx - ny * ny))};
         }
         out.meta[pixel] = meta[gl_pixel];
-        for (int a = 0; a < 2; ++a) {
+        for (int a = 0; a < c; ++a) {
           const float* albedo = &sums[2 * a][gl_pixel * 4];
           const float* geometry = &sums[2 * a + 1][gl_pixel * 4];
-          out.aggregates[pixel * 2 + a] = {{albedo[0], albedo[1], albedo[2]}, {geometry[0], geometry[1], geometry[2]},
+          out.aggregates[pixel * c + a] = {{albedo[0], albedo[1], albedo[2]}, {geometry[0], geometry[1], geometry[2]},
                                            geometry[3], albedo[3]};
         }
         out.pixel_rays[pixel] = view_position(cx, cy, 0.5f);
@@ -193,6 +206,8 @@ class Agaa : public Technique {
   }
 
   int samples_;
+  AgaaSettings settings_;
+  float k_pixels_;
   SamplePattern pattern_;
   SceneRenderer renderer_;
   gl::Texture depth_, normal_, primitive_, meta_;
@@ -205,8 +220,8 @@ class Agaa : public Technique {
 
 }  // namespace
 
-std::unique_ptr<Technique> make_agaa(int samples, float k, int width, int height) {
-  return std::make_unique<Agaa>(samples, k, width, height);
+std::unique_ptr<Technique> make_agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height) {
+  return std::make_unique<Agaa>(samples, settings, k_pixels, width, height);
 }
 
 AgaaFrameData read_back_agaa(Technique& agaa, const View& view) {

@@ -7,15 +7,20 @@
 
 namespace rsaa {
 
-std::unique_ptr<Technique> make_dcaa(int width, int height) {
-  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height);
-  const GLuint p = t->resolve_program();
-  const SamplePattern& pattern = t->coverage_lists()->lut().pattern();
+void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const DcaaSettings& settings) {
   std::vector<float> samples;
   for (const Vec2& s : pattern.positions) samples.insert(samples.end(), {float(s.x), float(s.y)});
   glProgramUniform2fv(p, glGetUniformLocation(p, "u_coverage_samples"), GLsizei(pattern.size()), samples.data());
   glProgramUniform1i(p, glGetUniformLocation(p, "u_coverage_sample_count"), pattern.size());
-  glProgramUniform1f(p, glGetUniformLocation(p, "u_cos_normal_threshold"), DcaaSettings{}.cos_normal_threshold);
+  glProgramUniform1f(p, glGetUniformLocation(p, "u_cos_normal_threshold"), settings.cos_normal_threshold);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_per_sample_visibility"), settings.per_sample_visibility);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_hidden"), settings.merge_hidden);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_disjoint_only"), settings.merge_disjoint_only);
+}
+
+std::unique_ptr<Technique> make_dcaa(int width, int height) {
+  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height);
+  configure_surface_resolve(t->resolve_program(), t->coverage_lists()->lut().pattern(), DcaaSettings{});
   return t;
 }
 

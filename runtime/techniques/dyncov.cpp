@@ -1,14 +1,22 @@
 // dyncov: Bertolami's dynamic coverage (seed 002) on the shared fragment lists: 16 coverage
-// samples (the d3d16x positions) from the half-plane LUT, two colour/depth/mask slots per pixel,
-// evict-the-farther update, coverage-weighted resolve. The rules and the choices for the cases
-// the seed leaves open are those of core/dynamic_coverage.h (the tests' oracle).
+// samples (the d3d16x positions) from the half-plane LUT, two slots per pixel. `rules` picks the
+// seed's literal update and resolve (evict the farther) or the surface rules, which are DCAA's
+// resolve program with 2 surfaces and dynamic_coverage_surface_settings(). Both rule sets, and
+// the choices for the cases the seed leaves open, are in core/dynamic_coverage.h (the oracle).
 #include "runtime/coverage_lists.h"
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
 
-std::unique_ptr<Technique> make_dynamic_coverage(int width, int height) {
-  return std::make_unique<CoverageListTechnique>(builtin_pattern("d3d16x"), "COVERAGE_DYNCOV", width, height);
+std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, int width, int height) {
+  if (rules == DynamicCoverageRules::Seed)
+    return std::make_unique<CoverageListTechnique>(dynamic_coverage_pattern(), "COVERAGE_DYNCOV_SEED", width, height);
+  const DcaaSettings settings = dynamic_coverage_surface_settings();
+  auto t = std::make_unique<CoverageListTechnique>(
+      dynamic_coverage_pattern(), "COVERAGE_DCAA\n#define DCAA_MAX_SURFACES " + std::to_string(settings.max_surfaces),
+      width, height);
+  configure_surface_resolve(t->resolve_program(), dynamic_coverage_pattern(), settings);
+  return t;
 }
 
 }  // namespace rsaa

@@ -1,6 +1,7 @@
 // Jittered supersampling: one single-sample pass per sample position, averaged in linear light
-// in an RGBA32F accumulator. Serves `msaa --samples 8` (the d3d8x positions; every sample is
-// shaded, so it bounds what 8x MSAA can reach) and `ssaa --samples 16|64` (stratified jitter:
+// in an RGBA32F accumulator. Serves `ssaa --samples 8` (the d3d8x positions; every sample is
+// shaded, so it bounds what 8x MSAA can reach: llvmpipe has no 8x MSAA, and calling this
+// "msaa 8x" compared the papers against a stronger baseline than theirs) and `ssaa --samples 16|64` (stratified jitter:
 // one uniformly placed sample per cell of a 4x4 / 8x8 grid; 64x is every metric's reference).
 #include <algorithm>
 #include <cmath>

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/agaa.h"
+#include "core/dynamic_coverage.h"
 #include "core/vec2.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/gl_context.h"
@@ -19,17 +20,23 @@ std::unique_ptr<Technique> make_fxaa(int width, int height);
 std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height);
 // Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
 std::unique_ptr<Technique> make_dcaa(int width, int height);
-std::unique_ptr<Technique> make_dynamic_coverage(int width, int height);
-// AGAA with 2 aggregates over `samples` (4: hardware MSAA, 8: jittered) visibility samples.
-std::unique_ptr<Technique> make_agaa(int samples, float k, int width, int height);
+std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, int width, int height);
+// Sets the uniforms of coverage_resolve.frag's COVERAGE_DCAA variant: coverage samples and the
+// DcaaSettings (dcaa, and dyncov's surface rules).
+void configure_surface_resolve(GLuint program, const SamplePattern& pattern, const DcaaSettings& settings);
+// AGAA with settings.aggregates aggregates over `samples` (4: hardware MSAA, 8: jittered)
+// visibility samples; k_pixels > 0: k is that many pixel footprints (AgaaSettings::k_per_depth,
+// set per frame from the view), else settings.k in scene units.
+std::unique_ptr<Technique> make_agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height);
 
 // The last frame's buffers of an agaa technique with jittered samples (multisampled textures
 // cannot be read back), rows top first: for the tests' CPU oracle.
 struct AgaaFrameData {
   int width = 0, height = 0, samples = 0;
+  AgaaSettings settings;  // as used for the frame (k_per_depth from its view)
   std::vector<AgaaSample> samples_of_pixels;  // width * height * samples
   std::vector<std::uint32_t> meta;            // width * height, agaa_samples.glsl's layout
-  std::vector<AgaaAggregateSums> aggregates;  // width * height * 2
+  std::vector<AgaaAggregateSums> aggregates;  // width * height * settings.aggregates
   std::vector<Normal3> pixel_rays;            // width * height, view space
 };
 AgaaFrameData read_back_agaa(Technique& agaa, const View& view);

@@ -52,7 +52,7 @@ double flicker_psnr(const std::vector<DisplayImage>& frames, const std::vector<D
 
 std::vector<TechniqueOptions> default_techniques() {
   std::vector<TechniqueOptions> list = {technique_options("noaa", 0), technique_options("fxaa", 0),
-                                        technique_options("msaa", 4), technique_options("msaa", 8),
+                                        technique_options("msaa", 4), technique_options("ssaa", 8),
                                         technique_options("ssaa", 16)};
   for (int kernel : {1, 2, 3}) {
     TechniqueOptions o = technique_options("ssaa-filtered", 0);
@@ -60,6 +60,9 @@ std::vector<TechniqueOptions> default_techniques() {
     list.push_back(o);
   }
   list.push_back(technique_options("dyncov", 0));
+  TechniqueOptions seed_rules = technique_options("dyncov", 0);
+  seed_rules.rules = "seed";
+  list.push_back(seed_rules);
   list.push_back(technique_options("dcaa", 0));
   list.push_back(technique_options("agaa", 4));
   list.push_back(technique_options("agaa", 8));
@@ -234,7 +237,8 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                                            {"similarity", r.options.similarity},
                                            {"auth", r.options.auth},
                                            {"pattern", r.options.pattern},
-                                           {"kernel", r.options.kernel}}},
+                                           {"kernel", r.options.kernel},
+                                           {"rules", r.options.rules}}},
                               {"passes", passes},
                               {"frame_ms", r.frame_ms},
                               {"frame_ratio_to_noaa", r.frame_ratio},
@@ -261,11 +265,10 @@ std::string results_csv(const std::vector<TechniqueResult>& results) {
     std::ostringstream passes;
     for (std::size_t i = 0; i < r.pass_medians.size(); ++i)
       passes << (i ? ";" : "") << r.pass_medians[i].pass << '=' << r.pass_medians[i].wall_milliseconds;
-    s << csv_text(passes.str()) << ',' << r.copy_ms << ',';
     std::ostringstream multiples;
     for (std::size_t i = 0; i < r.pass_medians.size(); ++i)
       multiples << (i ? ";" : "") << r.pass_medians[i].pass << '=' << copy_multiple(r, r.pass_medians[i]);
-    s << csv_text(multiples.str()) << '\n';
+    s << csv_text(passes.str()) << ',' << r.copy_ms << ',' << csv_text(multiples.str()) << '\n';
   }
   return s.str();
 }
@@ -292,6 +295,7 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       r.options.auth = opt.at("auth");
       r.options.pattern = opt.at("pattern");
       r.options.kernel = opt.value("kernel", 2);
+      r.options.rules = opt.value("rules", TechniqueOptions{}.rules);
       for (const auto& p : e.at("passes"))
         r.pass_medians.push_back({p.at("pass"), p.at("gl_timer_ms"), p.at("wall_ms")});
       r.frame_ms = e.at("frame_ms");

@@ -1,4 +1,4 @@
-// rsaa bench: the speed/accuracy trade of every technique on a set of scenes (DESIGN.md
+// rsaa bench: the speed/accuracy trade of every technique on a set of scenes (docs/conventions.md
 // section 5): per-pass and whole-frame times (medians, warm-up excluded, as ratios to the no-AA
 // frame of the same run), PSNR / SSIM / luminance-error share against 64x SSAA, temporal quality
 // over a short camera orbit, and memory per pixel.
@@ -42,7 +42,7 @@ struct TechniqueResult {
   bool pareto = false;  // no other technique of the scene is both faster and better (PSNR)
 };
 
-// The default technique list: noaa, fxaa, msaa 4x/8x, ssaa 16x, ssaa-filtered kernels 1-3,
+// The default technique list: noaa, fxaa, msaa 4x, ssaa 8x/16x, ssaa-filtered kernels 1-3,
 // dyncov, dcaa, agaa 4x/8x and the 12 RSAA variants.
 std::vector<TechniqueOptions> default_techniques();
 // The built-in scenes and the assimp test models the tests use.

@@ -229,7 +229,7 @@ std::string growth_json(const GrowthOptions& o, const GrowthResults& results) {
                                                                 : "ms_per_light",
                               s.ms_per_unit},
                              {"intercept_ms", s.intercept_ms}});
-  for (const char* b : {"msaa 4x", "msaa 8x"}) {
+  for (const char* b : {"msaa 4x", "ssaa 8x"}) {
     if (o.light_counts.empty()) break;
     const LightCrossing x = light_crossing(results, technique_label(technique_options("rsaa", 8)), b);
     out["light_crossings"].push_back({{"cheaper", x.a}, {"than", x.b}, {"first_measured_lights", x.measured},
@@ -293,7 +293,7 @@ std::string growth_markdown(const GrowthOptions& o, const GrowthResults& results
     }
     if (axis == GrowthAxis::Lights) {
       s << '\n';
-      for (const char* b : {"msaa 4x", "msaa 8x"}) {
+      for (const char* b : {"msaa 4x", "ssaa 8x"}) {
         const LightCrossing x = light_crossing(results, technique_label(technique_options("rsaa", 8)), b);
         s << "- " << x.a << " cheaper than " << x.b << ": "
           << (x.measured ? "from N = " + std::to_string(x.measured) + " measured" : std::string("at no measured N"));

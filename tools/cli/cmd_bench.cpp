@@ -1,5 +1,6 @@
 // rsaa bench: the speed/accuracy trade of every technique, written as JSON, CSV, PNG plots and a
 // Markdown table.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -17,7 +18,7 @@ namespace rsaa::cli {
 namespace {
 
 struct BenchArgs {
-  std::string scenes;
+  std::string scenes, techniques;
   int width = 640, height = 480;
   int frames = 5, orbit_frames = 4;
   bool quick = false;
@@ -101,6 +102,19 @@ int run_bench_command(BenchArgs a) {
     o.scenes = bench::default_scenes();
   }
   if (!a.scenes.empty()) o.scenes = split(a.scenes);
+  if (!a.techniques.empty()) {
+    // Keep the listed labels of the default list; noaa stays first as the ratio baseline.
+    const std::vector<std::string> keep = split(a.techniques);
+    std::vector<TechniqueOptions> chosen;
+    for (const TechniqueOptions& t : o.techniques) {
+      const std::string label = technique_label(t);
+      if (t.technique == "noaa" || std::find(keep.begin(), keep.end(), label) != keep.end()) chosen.push_back(t);
+    }
+    for (const std::string& k : keep)
+      if (std::none_of(chosen.begin(), chosen.end(), [&](const TechniqueOptions& t) { return technique_label(t) == k; }))
+        throw std::invalid_argument("--techniques: no technique labelled '" + k + "' in the bench");
+    o.techniques = chosen;
+  }
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
   if (!a.lights.empty()) {
     const auto lights = light_counts(a.lights);
@@ -155,6 +169,8 @@ Action add_bench_command(CLI::App& app) {
                "64x SSAA, temporal flicker, memory); writes JSON, CSV and PNG plots");
   cmd->add_option("--scenes", args->scenes,
                   "Comma-separated scenes (default: all built-in scenes and three assimp test models)");
+  cmd->add_option("--techniques", args->techniques,
+                  "Comma-separated labels to keep (e.g. 'msaa 4x,dyncov'; noaa is always run)");
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();
   cmd->add_option("--height", args->height, "Image height")->capture_default_str();
   cmd->add_option("--frames", args->frames, "Timed frames per technique (median)")->capture_default_str()

@@ -19,12 +19,13 @@ struct RenderArgs {
   int width = 640, height = 480;
   std::string camera;
   std::string out;
+  float scene_scale = 1.0f;
 };
 
 int run_render(const RenderArgs& a) {
   validate(a.technique);
   validate_size(a.width, a.height);
-  const Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
+  const Scene scene = scaled_scene(load_scene_within(a.scene, kSceneLoadSeconds), a.scene_scale);
   std::optional<Camera> camera;
   if (!a.camera.empty()) camera = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   gl::HeadlessContext context;
@@ -57,6 +58,7 @@ Action add_render_command(CLI::App& app) {
   cmd->add_option("--camera", args->camera,
                   "ex,ey,ez,tx,ty,tz[,fov]: eye, target, vertical fov in degrees (default: the "
                   "scene's view, or framing the model's bounds)");
+  cmd->add_option("--scene-scale", args->scene_scale, "Multiply the scene's positions and camera by this (units test)");
   cmd->add_option("--out", args->out, "Output image (PNG: 8-bit sRGB; EXR: linear)")->required();
   return [args] { return run_render(*args); };
 }

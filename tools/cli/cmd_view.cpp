@@ -55,7 +55,7 @@ std::string screenshot_name(const std::string& pattern, int number) {
 }
 
 const char* kHelp =
-    "keys: 1 noaa, 2 msaa 4x, 3 msaa 8x, 4 ssaa 16x, 5 ssaa 64x, 6 rsaa 8x, 7 rsaa 4x, 8 dcaa, 9 dyncov,\n"
+    "keys: 1 noaa, 2 msaa 4x, 3 ssaa 8x, 4 ssaa 16x, 5 ssaa 64x, 6 rsaa 8x, 7 rsaa 4x, 8 dcaa, 9 dyncov,\n"
     "      S/D/G similarity sadp/depth/sadp-plane, A cycle auth 0/1/2, P screenshot, Q or Esc quit\n";
 
 class Viewer {
@@ -73,7 +73,7 @@ class Viewer {
     switch (k) {
       case GLFW_KEY_1: o = technique_options("noaa", 0); break;
       case GLFW_KEY_2: o = technique_options("msaa", 4); break;
-      case GLFW_KEY_3: o = technique_options("msaa", 8); break;
+      case GLFW_KEY_3: o = technique_options("ssaa", 8); break;
       case GLFW_KEY_4: o = technique_options("ssaa", 16); break;
       case GLFW_KEY_5: o = technique_options("ssaa", 64); break;
       case GLFW_KEY_6: o.technique = "rsaa"; o.samples = 8; o.pattern.clear(); break;

@@ -1,4 +1,4 @@
-// rsaa: one executable, one subcommand per job (DESIGN.md section 4).
+// rsaa: one executable, one subcommand per job (docs/conventions.md section 4).
 #include <sys/resource.h>
 
 #include <algorithm>

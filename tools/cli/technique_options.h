@@ -15,7 +15,7 @@ constexpr double kSceneLoadSeconds = 40.0;
 inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
   cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | ssaa-filtered | rsaa | dcaa | dyncov | agaa")->capture_default_str();
   cmd->add_option("--samples", o.samples,
-                  "msaa: 4 (hardware) | 8 (jittered); ssaa: 16 | 64; rsaa: 4 | 8 (default 8); agaa: 4 (hardware) | 8 "
+                  "msaa: 4 (hardware); ssaa: 8 (d3d8x) | 16 | 64; rsaa: 4 | 8 (default 8); agaa: 4 (hardware) | 8 "
                   "(jittered, default)")
       ->check(kWholeNumber);
   cmd->add_option("--similarity", o.similarity, "rsaa: sadp-plane (SADP or the gap between the surfaces' planes along the view ray, which finds silhouettes over grazing surfaces) | sadp | depth (the paper's two)")->capture_default_str();
@@ -35,7 +35,19 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
       ->capture_default_str()
       ->check(kWholeNumber);
   cmd->add_option("--agaa-k", o.agaa_k,
-                  "agaa: characteristic length of the clustering distance, scene units (the paper: 10 cm)")
+                  "agaa: characteristic length of the clustering distance in scene units (the paper: 10 cm); "
+                  "0 (default): relative, --agaa-k-pixels")
+      ->capture_default_str();
+  cmd->add_option("--agaa-diffuse", o.agaa_diffuse,
+                  "agaa: filtered (Lambert term scaled by the aggregate's mean normal length) | plain")
+      ->capture_default_str();
+  cmd->add_option("--agaa-aggregates", o.agaa_aggregates, "agaa: c, aggregates per pixel (1-4)")->capture_default_str();
+  cmd->add_option("--agaa-k-pixels", o.agaa_k_pixels,
+                  "agaa: characteristic length in pixel footprints at the surface (independent of the units)")
+      ->capture_default_str();
+  cmd->add_option("--rules", o.rules,
+                  "dyncov: surface (merge fragments of one surface, background on uncovered samples) | seed "
+                  "(the seed's rules as written)")
       ->capture_default_str();
 }
 
