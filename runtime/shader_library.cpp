@@ -38,15 +38,6 @@ std::string shader_source(const std::string& name) {
   return out;
 }
 
-std::string table_glsl(const std::string& pattern) {
-  const auto& sources = embedded_shader_sources();
-  const auto it = sources.find("tables/" + pattern + ".glsl");
-  if (it == sources.end())
-    throw std::runtime_error("no baked offset table for pattern '" + pattern +
-                             "' in this build (tables/" + pattern + ".glsl)");
-  return it->second;
-}
-
 OffsetTable builtin_offset_table(const std::string& pattern) {
   const auto& sources = embedded_shader_sources();
   const auto it = sources.find("tables/" + pattern + ".json");

@@ -45,6 +45,7 @@ const std::vector<std::string>& technique_names() {
 
 void validate(const TechniqueOptions& o) {
   const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
+  if (!o.table.empty() && o.technique != "rsaa") bad("--table is an rsaa option, not " + o.technique + "'s");
   if (o.technique == "noaa" || o.technique == "fxaa") {
     if (o.samples > 1) bad(o.technique + " takes no --samples");
   } else if (o.technique == "dcaa") {
@@ -73,7 +74,7 @@ void validate(const TechniqueOptions& o) {
     if (o.kernel < 1 || o.kernel > 3) bad("ssaa-filtered --kernel must be 1, 2 or 3");
   } else if (o.technique == "rsaa") {
     const int n = samples_or(o, 8);
-    if (n != 4 && n != 8) bad("rsaa --samples must be 4 or 8, not " + std::to_string(n));
+    if (o.table.empty() && n != 4 && n != 8) bad("rsaa --samples must be 4 or 8, not " + std::to_string(n));
     if (o.similarity != "sadp" && o.similarity != "depth" && o.similarity != "sadp-plane")
       bad("rsaa --similarity must be sadp, depth or sadp-plane, not '" + o.similarity + "'");
     if (o.auth < 0 || o.auth > 2) bad("rsaa --auth must be 0, 1 or 2");
@@ -82,6 +83,8 @@ void validate(const TechniqueOptions& o) {
       if (n == 4 && o.pattern != "gl4x" && o.pattern != "d3d4x")
         bad("rsaa --samples 4 uses --pattern gl4x or d3d4x");
     }
+    if (!o.table.empty() && !o.pattern.empty())
+      bad("rsaa --table brings its own sample pattern: leave out --pattern");
     if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32)
       bad("rsaa --code-bits must be 8, 16 or 32");
     if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)
@@ -107,6 +110,12 @@ std::string technique_label(const TechniqueOptions& o) {
     if (o.agaa_aggregates != TechniqueOptions{}.agaa_aggregates) k << " c" << o.agaa_aggregates;
     if (o.agaa_diffuse != TechniqueOptions{}.agaa_diffuse) k << " " << o.agaa_diffuse;
     return label + k.str();
+  }
+  if (!o.table.empty()) {  // the table's file name stands for its pattern and sample count
+    const std::size_t slash = o.table.find_last_of('/');
+    std::string stem = o.table.substr(slash == std::string::npos ? 0 : slash + 1);
+    if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ".json") == 0) stem.resize(stem.size() - 5);
+    return "rsaa table " + stem + " " + o.similarity + " auth" + std::to_string(o.auth);
   }
   const int n = samples_or(o, 8);
   std::string label = "rsaa " + std::to_string(n) + "x ";
@@ -139,8 +148,18 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
 
 RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   RsaaSettings s;
-  const int n = samples_or(o, 8);
-  s.pattern = n == 8 ? "d3d8x" : o.pattern.empty() ? "gl4x" : o.pattern;
+  if (!o.table.empty()) {
+    s.table = std::make_shared<const OffsetTable>(read_offset_table(o.table));
+    const int table_samples = s.table->pattern.size();
+    if (o.samples != 0 && o.samples != table_samples)
+      throw std::invalid_argument("--table " + o.table + " is for " + std::to_string(table_samples) +
+                                  " samples (pattern '" + s.table->pattern.name + "'), but --samples is " +
+                                  std::to_string(o.samples));
+    s.pattern.clear();  // the table's own
+  } else {
+    const int n = samples_or(o, 8);
+    s.pattern = n == 8 ? "d3d8x" : o.pattern.empty() ? "gl4x" : o.pattern;
+  }
   s.similarity = o.similarity;
   s.auth = o.auth;
   s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;

@@ -72,9 +72,12 @@ void main() {
       if (to_outside - similarity[fs] > similarity[fs]) offset *= 0.5;
     }
 #endif
-    vec4 fetched = texture(u_colour, (gl_FragCoord.xy + offset) / u_viewport);
-    // As the CPU reference: a NaN or infinite neighbour never spreads into this pixel.
-    if (!any(isnan(fetched)) && !any(isinf(fetched))) colour = fetched;
+    // A zero offset keeps the texel exactly (a filtered fetch at the texel centre may not).
+    if (offset != vec2(0.0)) {
+      vec4 fetched = texture(u_colour, (gl_FragCoord.xy + offset) / u_viewport);
+      // As the CPU reference: a NaN or infinite neighbour never spreads into this pixel.
+      if (!any(isnan(fetched)) && !any(isinf(fetched))) colour = fetched;
+    }
   }
   o_colour = colour;
 #ifdef RSAA_OUTPUT_MASK

@@ -15,6 +15,7 @@
 #include "runtime/render.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/scene.h"
+#include "runtime/scene_renderer.h"
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
@@ -153,6 +154,58 @@ TEST_F(Runtime, GlPostProcessEqualsTheCpuReference) {
   int worst = 0;
   for (std::size_t i = 0; i < gl.rgb.size(); ++i) worst = std::max(worst, std::abs(gl.rgb[i] - cpu.rgb[i]));
   EXPECT_LE(worst, 1) << "largest 8-bit difference between GL and CPU";
+}
+
+// Tables reach the pass as data. All-zero offsets leave the engine's 1x colour exactly as it
+// is; a table trained for other positions (a custom pattern, as rsaa train writes one) renders
+// with the pre-pass at its positions; a table of another pattern than the one named is refused.
+TEST_F(Runtime, TablesAtRunTime) {
+  const Scene scene = load_scene("builtin:default");
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
+  RsaaTargets targets(kWidth, kHeight);
+  const glm::vec3 background = gpu.background();
+  targets.clear(&background.x);
+  targets.bind();
+  const SceneRenderer renderer;
+  SceneRenderer::draw(gpu, view, {0.0f, 0.0f}, renderer.gbuffer_program());
+  const RsaaFrame frame = targets.frame(view.inverse_projection());
+  const Image one_x = read_back_image(targets.colour(), kWidth, kHeight);
+  const auto resolve_with = [&](const RsaaSettings& settings) {
+    RsaaPass pass(settings, kWidth, kHeight);
+    pass.render_subsamples(frame, [&](GlName program, glm::vec2 jitter) { SceneRenderer::draw(gpu, view, jitter, program); });
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+    pass.resolve(frame, output.get());
+    return read_back_image(output.get(), kWidth, kHeight);
+  };
+  OffsetTable zero = read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/d3d8x.json");
+  for (Vec2& d : zero.offsets) d = {0.0, 0.0};
+  RsaaSettings settings;
+  settings.table = std::make_shared<const OffsetTable>(zero);
+  const Image unchanged = resolve_with(settings);
+  for (std::size_t p = 0; p < one_x.pixels.size(); ++p) {
+    ASSERT_EQ(unchanged.pixels[p].r, one_x.pixels[p].r) << p;
+    ASSERT_EQ(unchanged.pixels[p].g, one_x.pixels[p].g) << p;
+    ASSERT_EQ(unchanged.pixels[p].b, one_x.pixels[p].b) << p;
+  }
+  // A custom pattern: the d3d4x positions turned by 90 degrees, with the fallback rule's offsets.
+  std::vector<Vec2> turned;
+  for (const Vec2& s : builtin_pattern("d3d4x").positions) turned.push_back({-s.y, s.x});
+  const OffsetTable custom = fallback_table(pattern_from_positions("custom-turned", turned));
+  settings.table = std::make_shared<const OffsetTable>(custom);
+  settings.pattern.clear();
+  const Image with_custom = resolve_with(settings);
+  const Image reference = render("builtin:default", technique_options("ssaa", 64));
+  EXPECT_GT(psnr(with_custom, reference), psnr(one_x, reference) + 1.0);
+  EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).pattern().name, "custom-turned");
+  settings.pattern = "d3d8x";
+  try {
+    RsaaPass refused(settings, kWidth, kHeight);
+    ADD_FAILURE() << "a table of another pattern was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("custom-turned"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("d3d8x"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(Runtime, FlippedYOrReversedBitsMeasurablyLosePsnr) {

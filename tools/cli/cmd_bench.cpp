@@ -18,7 +18,7 @@ namespace rsaa::cli {
 namespace {
 
 struct BenchArgs {
-  std::string scenes, techniques;
+  std::string scenes, techniques, table;
   int width = 640, height = 480;
   int frames = 5, orbit_frames = 4;
   bool quick = false;
@@ -115,6 +115,12 @@ int run_bench_command(BenchArgs a) {
         throw std::invalid_argument("--techniques: no technique labelled '" + k + "' in the bench");
     o.techniques = chosen;
   }
+  if (!a.table.empty()) {  // RSAA with the user's table, beside the built-in ones
+    TechniqueOptions t = technique_options("rsaa");
+    t.table = a.table;
+    validate(t);
+    o.techniques.push_back(t);
+  }
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
   if (!a.lights.empty()) {
     const auto lights = light_counts(a.lights);
@@ -171,6 +177,8 @@ Action add_bench_command(CLI::App& app) {
                   "Comma-separated scenes (default: all built-in scenes and three assimp test models)");
   cmd->add_option("--techniques", args->techniques,
                   "Comma-separated labels to keep (e.g. 'msaa 4x,dyncov'; noaa is always run)");
+  cmd->add_option("--table", args->table,
+                  "Also bench RSAA (default options) with this offset table file (JSON), e.g. a scene-specific one");
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();
   cmd->add_option("--height", args->height, "Image height")->capture_default_str();
   cmd->add_option("--frames", args->frames, "Timed frames per technique (median)")->capture_default_str()

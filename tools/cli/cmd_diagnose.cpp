@@ -110,7 +110,7 @@ int run_diagnose(const DiagnoseArgs& a) {
   technique->render(gpu_scene, view, output.get());
   in.rsaa = read_back_image(output.get(), a.width, a.height);
   for (std::uint32_t m : read_back_uints(mask_texture.get(), a.width, a.height)) in.masks.push_back(m);
-  const OffsetTable table = gl::builtin_offset_table(settings.pattern == "gl4x" ? "gl4x" : settings.pattern);
+  const OffsetTable table = settings.table ? *settings.table : gl::builtin_offset_table(settings.pattern);
   in.table = &table;
 
   std::printf("diagnose: surfaces per pixel from %d samples\n", a.surface_samples_per_side * a.surface_samples_per_side);

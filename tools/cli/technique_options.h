@@ -26,6 +26,9 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "rsaa similarity threshold (default 0.4: SADP units, or percent of depth)")
       ->check(finite_range(0.0, 1e30));
   cmd->add_option("--pattern", o.pattern, "rsaa 4x sample pattern: gl4x (driver, default) | d3d4x");
+  cmd->add_option("--table", o.table,
+                  "rsaa: an offset table file (JSON: rsaa train, train --from-scene, a custom pattern) "
+                  "instead of the built-in table; the pre-pass samples the table's positions");
   cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
       ->check(kWholeNumber);
