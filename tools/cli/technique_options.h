@@ -39,8 +39,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "agaa: characteristic length in pixel footprints at the surface (independent of the units)")
       ->capture_default_str();
   cmd->add_option("--rules", o.rules,
-                  "dyncov: surface (merge fragments of one surface, background on uncovered samples) | seed "
-                  "(the seed's rules as written)")
+                  "dyncov: surface (merge fragments of one surface, per-sample visibility) | seed (the seed's "
+                  "rules as written); dcaa: surface | paper (Algorithm 1 as written)")
       ->capture_default_str();
 }
 
