@@ -27,6 +27,7 @@ struct TechniqueOptions {
   std::string agaa_diffuse = "filtered";  // agaa: filtered (Lambert term scaled by |Na|) | plain
   std::string rules = "surface";     // dyncov: surface | seed (core/dynamic_coverage.h);
                                      // dcaa: surface | paper (core/dcaa.h)
+  bool z_prepass = false;            // dcaa, dyncov: DCAA's z-prepass (4x MSAA max depth)
 };
 
 // Options for a technique by name and sample count (0: its default), other fields defaulted.

@@ -20,8 +20,8 @@ void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const Dca
   glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_into_all"), settings.second_merge_into_all);
 }
 
-std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, int width, int height) {
-  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height);
+std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, int width, int height) {
+  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height, z_prepass);
   configure_surface_resolve(t->resolve_program(), t->coverage_lists()->lut().pattern(), settings);
   return t;
 }

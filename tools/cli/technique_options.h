@@ -31,6 +31,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "agaa: characteristic length of the clustering distance in scene units (the paper: 10 cm); "
                   "0 (default): relative, --agaa-k-pixels")
       ->capture_default_str();
+  cmd->add_flag("--z-prepass", o.z_prepass,
+                "dcaa, dyncov: cull fragments behind the farthest of 4 hardware MSAA depths (DCAA's section 4.2)");
   cmd->add_option("--agaa-diffuse", o.agaa_diffuse,
                   "agaa: filtered (Lambert term scaled by the aggregate's mean normal length) | plain")
       ->capture_default_str();
