@@ -1,21 +1,71 @@
-// Output files appear whole or not at all: write a temporary file beside the target, then
-// rename it over the target.
+// Files in and out, bounded and all-or-nothing.
+// Out: write a temporary file beside the target, then rename it over the target; several files
+// that belong together are committed as one unit. In: only regular files, within a size budget
+// checked before anything is allocated (a FIFO, /dev/zero or a huge file is refused at once).
 #pragma once
 
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace rsaa {
 
+// A refusal because an input is over a budget or of the wrong kind (FIFO, device): callers
+// that tolerate broken optional inputs (a model's texture) still refuse these.
+class LimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Default read budget: larger than any file the project reads as a whole.
+constexpr std::uint64_t kDefaultReadBudgetBytes = std::uint64_t{256} << 20;
+
 // Throws std::runtime_error naming the path when the directory is missing or unwritable.
 void write_file_atomically(const std::string& path, const std::string& contents);
 
-// Several files that belong together: all temporaries are written first, then renamed, so a
-// failure leaves none of the targets touched (short of a failing rename).
+// Several files that belong together: all temporaries are written first, then renamed. When a
+// rename fails midway, the targets already replaced get their previous contents back (kept as
+// hard links until the commit is done), so the set is never mixed. Temporaries of runs that
+// died (kill -9) are removed from the target directories first.
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
-// Whole file as a string; throws std::runtime_error naming the path when it cannot be read.
-std::string read_whole_file(const std::string& path);
+// The same with the rename made injectable, for tests of a failing rename.
+using RenameFn = std::function<bool(const std::string& from, const std::string& to, std::string& error)>;
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files,
+                            const RenameFn& rename);
+
+// A fresh temporary name beside `target` for this process: DIR/.STEM.tmp-PID-N.EXT (the
+// extension is kept so that format-by-extension writers still work).
+std::string temporary_path_beside(const std::string& target);
+// Removes DIR/.*.tmp-PID-* files whose PID is no longer running; returns how many.
+std::size_t remove_stale_temporaries(const std::string& dir);
+
+// Checks that `path` is a regular file of at most `max_bytes` without blocking on it (FIFOs and
+// devices are refused, not opened for reading); returns its size. `what` names the kind of
+// file in messages ("image", "texture", ...). Throws std::runtime_error naming the path, the
+// size and the limit (LimitError for those two, std::runtime_error when it cannot be opened).
+std::uint64_t check_regular_file(const std::string& path, std::uint64_t max_bytes,
+                                 const std::string& what = "file");
+
+// Whole file as a string, under the same checks; throws std::runtime_error naming the path.
+std::string read_whole_file(const std::string& path,
+                            std::uint64_t max_bytes = kDefaultReadBudgetBytes,
+                            const std::string& what = "file");
+
+// An exclusive advisory lock (flock) on a directory, held while the object lives. A second
+// holder is refused at once with an error naming the directory and `purpose`.
+class DirectoryLock {
+ public:
+  DirectoryLock(const std::string& dir, const std::string& purpose);
+  ~DirectoryLock();
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 }  // namespace rsaa

@@ -1,5 +1,5 @@
-// The 3x3 neighbourhood of a pixel and the bilinear estimate of DESIGN.md section 2: what the
-// post-process computes with one bilinear fetch at offset (dx, dy), |dx|, |dy| <= 1.
+// The 3x3 neighbourhood of a pixel and the bilinear estimate of docs/conventions.md section 2: what
+// the post-process computes with one bilinear fetch at offset (dx, dy), |dx|, |dy| <= 1.
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,24 @@
 #include "core/case_set.h"
 
+#include <algorithm>
+
 namespace rsaa {
+namespace {
+
+// Cases first .. first + cases.size() - 1 into `cases`.
+void fill_cases(const SamplePattern& pattern, std::uint64_t first, std::uint64_t seed, int threads,
+                std::vector<CaseRecord>& cases, const ProgressFn& progress) {
+  parallel_for(
+      cases.size(), 1 << 14, threads,
+      [&](std::uint64_t begin, std::uint64_t end) {
+        for (std::uint64_t i = begin; i < end; ++i)
+          cases[i] = make_case_record(
+              draw_line_case(seed, first + i, line_count_of_case(first + i)), pattern);
+      },
+      progress);
+}
+
+}  // namespace
 
 CaseRecord make_case_record(const LineCase& line_case, const SamplePattern& pattern) {
   CaseRecord r;
@@ -15,14 +33,24 @@ std::vector<CaseRecord> generate_cases(const SamplePattern& pattern, std::uint64
                                        std::uint64_t seed, int threads,
                                        const ProgressFn& progress) {
   std::vector<CaseRecord> cases(count);
-  parallel_for(
-      count, 1 << 14, threads,
-      [&](std::uint64_t begin, std::uint64_t end) {
-        for (std::uint64_t i = begin; i < end; ++i)
-          cases[i] = make_case_record(draw_line_case(seed, i, line_count_of_case(i)), pattern);
-      },
-      progress);
+  fill_cases(pattern, 0, seed, threads, cases, progress);
   return cases;
+}
+
+void for_each_case_block(const SamplePattern& pattern, std::uint64_t count, std::uint64_t seed,
+                         int threads, std::uint64_t block,
+                         const std::function<void(const std::vector<CaseRecord>&)>& consume,
+                         const ProgressFn& progress) {
+  block = std::max<std::uint64_t>(block, 1);
+  std::vector<CaseRecord> cases;
+  for (std::uint64_t first = 0; first < count; first += block) {
+    cases.resize(std::min(block, count - first));
+    ProgressFn step;
+    if (progress)
+      step = [&](std::uint64_t done, std::uint64_t) { progress(first + done, count); };
+    fill_cases(pattern, first, seed, threads, cases, step);
+    consume(cases);
+  }
 }
 
 }  // namespace rsaa

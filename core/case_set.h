@@ -1,7 +1,9 @@
-// Case sets: the line cases of DESIGN.md section 2 reduced to what training and evaluation use.
+// Case sets: the line cases of docs/conventions.md section 2 reduced to what training and
+// evaluation use.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "core/line_case.h"
@@ -23,5 +25,12 @@ CaseRecord make_case_record(const LineCase& line_case, const SamplePattern& patt
 std::vector<CaseRecord> generate_cases(const SamplePattern& pattern, std::uint64_t count,
                                        std::uint64_t seed, int threads = 0,
                                        const ProgressFn& progress = nullptr);
+
+// The same cases handed to `consume` in index order, at most `block` at a time (each block
+// generated on `threads` threads), so that memory does not grow with `count`.
+void for_each_case_block(const SamplePattern& pattern, std::uint64_t count, std::uint64_t seed,
+                         int threads, std::uint64_t block,
+                         const std::function<void(const std::vector<CaseRecord>&)>& consume,
+                         const ProgressFn& progress = nullptr);
 
 }  // namespace rsaa

@@ -1,5 +1,5 @@
 // sRGB transfer functions (IEC 61966-2-1) and Rec. 709 luminance. Shading and filtering work in
-// linear light; 8-bit image files hold sRGB-encoded values (DESIGN.md section 5).
+// linear light; 8-bit image files hold sRGB-encoded values (docs/conventions.md section 5).
 #pragma once
 
 #include <algorithm>

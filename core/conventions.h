@@ -1,4 +1,4 @@
-// The project's conventions, written down once (DESIGN.md section 1).
+// The project's conventions, written down once (docs/conventions.md section 1).
 //
 // Pixel space: units of one pixel, origin at the pixel centre, +x right, +y DOWN (the paper's
 // and Direct3D's screen space). Sample patterns, masks, line cases and offset tables all live in

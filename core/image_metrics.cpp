@@ -18,6 +18,8 @@ ImageComparison compare_images(const DisplayImage& a, const DisplayImage& b, dou
                                 std::to_string(a.height) + " against " + std::to_string(b.width) +
                                 "x" + std::to_string(b.height));
   ImageComparison c;
+  c.non_finite_a = a.non_finite_pixels;
+  c.non_finite_reference = b.non_finite_pixels;
   double squared = 0.0;
   std::size_t over = 0;
   const std::size_t n = std::size_t(a.width) * a.height;
@@ -38,6 +40,7 @@ ImageComparison compare_images(const DisplayImage& a, const DisplayImage& b, dou
   const cv::Mat mb(b.height, b.width, CV_8UC3, const_cast<std::uint8_t*>(b.rgb.data()));
   const cv::Scalar ssim = cv::quality::QualitySSIM::compute(ma, mb, cv::noArray());
   c.ssim = (ssim[0] + ssim[1] + ssim[2]) / 3.0;
+  if (!c.defined()) c.psnr_db = c.ssim = c.mse = c.luma_error_share = std::numeric_limits<double>::quiet_NaN();
   return c;
 }
 

@@ -11,19 +11,41 @@ Vec2 Line::direction() const { return {std::cos(angle), std::sin(angle)}; }
 
 double Line::side(Vec2 p) const { return cross(direction(), p - point); }
 
-bool LineCase::in_centre_cell(Vec2 p) const {
-  for (int k = 0; k < line_count; ++k) {
-    const double centre_side = lines[k].side({0.0, 0.0});
-    const double p_side = lines[k].side(p);
-    if (!(centre_side * p_side > 0.0)) return false;
+namespace {
+
+// The centre cell with each line's direction and centre side computed once: mask() and
+// neighbourhood() test up to 25 points, and Line::side() costs a cos and a sin per call (the
+// trainer's case generation was mostly that). Same expressions as Line::side, so same bits.
+class CentreCell {
+ public:
+  explicit CentreCell(const LineCase& c) : count_(c.line_count) {
+    for (int k = 0; k < count_; ++k) {
+      point_[k] = c.lines[k].point;
+      direction_[k] = c.lines[k].direction();
+      centre_side_[k] = cross(direction_[k], Vec2{0.0, 0.0} - point_[k]);
+    }
   }
-  return true;
-}
+  bool contains(Vec2 p) const {
+    for (int k = 0; k < count_; ++k)
+      if (!(centre_side_[k] * cross(direction_[k], p - point_[k]) > 0.0)) return false;
+    return true;
+  }
+
+ private:
+  int count_;
+  Vec2 point_[2], direction_[2];
+  double centre_side_[2] = {0.0, 0.0};
+};
+
+}  // namespace
+
+bool LineCase::in_centre_cell(Vec2 p) const { return CentreCell(*this).contains(p); }
 
 Mask LineCase::mask(const SamplePattern& pattern) const {
+  const CentreCell cell(*this);
   Mask m = 0;
   for (int i = 0; i < pattern.size(); ++i)
-    if (in_centre_cell(pattern.positions[i])) m = with_similar(m, i);
+    if (cell.contains(pattern.positions[i])) m = with_similar(m, i);
   return m;
 }
 
@@ -40,9 +62,10 @@ double LineCase::coverage() const {
 }
 
 Neighbourhood3x3 LineCase::neighbourhood() const {
+  const CentreCell cell(*this);
   Neighbourhood3x3 n;
   for (int j = -1; j <= 1; ++j)
-    for (int i = -1; i <= 1; ++i) n.at(i, j) = in_centre_cell({double(i), double(j)}) ? 1.0 : 0.0;
+    for (int i = -1; i <= 1; ++i) n.at(i, j) = cell.contains({double(i), double(j)}) ? 1.0 : 0.0;
   return n;
 }
 

@@ -1,5 +1,5 @@
-// Line cases (DESIGN.md section 2): one or two random lines cross the pixel; the cell of their
-// arrangement that holds the pixel centre is white, the rest black.
+// Line cases (docs/conventions.md section 2): one or two random lines cross the pixel; the cell of
+// their arrangement that holds the pixel centre is white, the rest black.
 #pragma once
 
 #include <array>

@@ -38,9 +38,22 @@ std::string upper(std::string s) {
   return s;
 }
 
+// The command line goes into a // comment of the shader files: control characters (a newline
+// would start a line of code) are written as \xNN.
 std::string generated_by(const OffsetTable& table) {
   const auto it = table.training.find("command");
-  return it != table.training.end() && it->is_string() ? it->get<std::string>() : "(unknown)";
+  if (it == table.training.end() || !it->is_string()) return "(unknown)";
+  std::string out;
+  for (unsigned char c : it->get<std::string>()) {
+    if (c >= 0x20 && c != 0x7f) {
+      out += char(c);
+    } else {
+      char buffer[8];
+      std::snprintf(buffer, sizeof buffer, "\\x%02x", c);
+      out += buffer;
+    }
+  }
+  return out;
 }
 
 // --- reading -------------------------------------------------------------------------------
@@ -140,7 +153,7 @@ OffsetTable parse_offset_table(const std::string& text, const std::string& origi
   if (!version.is_number_integer() || version.get<long long>() != 1)
     reader.fail("version", "expected 1 (the only version this program reads)");
   if (reader.string_field(root, "y_axis") != "down")
-    reader.fail("y_axis", "expected \"down\" (pixel space, DESIGN.md section 1)");
+    reader.fail("y_axis", "expected \"down\" (pixel space, docs/conventions.md section 1)");
   reader.string_field(root, "mask_bit");
 
   const std::string name = reader.string_field(root, "pattern");
@@ -157,7 +170,11 @@ OffsetTable parse_offset_table(const std::string& text, const std::string& origi
     positions.push_back(reader.pair(samples[i], "samples[" + std::to_string(i) + "]", 0.5));
 
   OffsetTable table;
-  table.pattern = pattern_from_positions(name, positions);
+  try {
+    table.pattern = pattern_from_positions(name, positions);
+  } catch (const std::invalid_argument& e) {
+    reader.fail("samples", e.what());
+  }
   if (is_builtin_pattern(name)) {
     const SamplePattern builtin = builtin_pattern(name);
     if (builtin.size() != table.pattern.size())
@@ -194,7 +211,7 @@ OffsetTable parse_offset_table(const std::string& text, const std::string& origi
 OffsetTable read_offset_table(const std::string& path) {
   std::string text;
   try {
-    text = read_whole_file(path);
+    text = read_whole_file(path, kMaxTableFileBytes, "table");
   } catch (const std::runtime_error& e) {
     throw TableError(e.what());
   }
@@ -292,8 +309,26 @@ std::string offset_table_hlsl(const OffsetTable& table) { return shader_table(ta
 
 std::vector<std::string> write_offset_table_files(const OffsetTable& table, const std::string& dir,
                                                   const std::string& stem) {
-  const std::string base =
-      (dir.empty() ? std::string(".") : dir) + "/" + (stem.empty() ? table.pattern.name : stem);
+  const std::string name = stem.empty() ? table.pattern.name : stem;
+  // The stem is a file name inside `dir` and the pattern name is written into shader code.
+  for (const std::string& n : {name, table.pattern.name})
+    if (!is_valid_pattern_name(n))
+      throw std::invalid_argument("table name '" + n + "' must be 1 to " +
+                                  std::to_string(kMaxPatternNameLength) +
+                                  " letters, digits, '-' or '_'");
+  // What the reader would refuse is never written.
+  if (table.offsets.size() != table.pattern.mask_count() ||
+      table.sources.size() != table.offsets.size() ||
+      table.cases_per_mask.size() != table.offsets.size())
+    throw std::invalid_argument("table " + name + ": entry counts do not match the pattern");
+  for (std::size_t m = 0; m < table.offsets.size(); ++m) {
+    const Vec2 d = table.offsets[m];
+    if (!is_finite(d) || std::abs(d.x) > 1.0 || std::abs(d.y) > 1.0)
+      throw std::invalid_argument("table " + name + ": offset of mask " + std::to_string(m) +
+                                  " is [" + number_text(d.x) + ", " + number_text(d.y) +
+                                  "], not finite within [-1, 1]; nothing written");
+  }
+  const std::string base = (dir.empty() ? std::string(".") : dir) + "/" + name;
   const std::vector<std::pair<std::string, std::string>> files = {
       {base + ".json", offset_table_json(table)},
       {base + ".glsl", offset_table_glsl(table)},

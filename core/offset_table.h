@@ -1,5 +1,5 @@
-// Offset tables: one resampling offset per similarity mask (DESIGN.md section 3), and their
-// three file forms (JSON, GLSL include, HLSL include).
+// Offset tables: one resampling offset per similarity mask (docs/conventions.md section 3), and
+// their three file forms (JSON, GLSL include, HLSL include).
 #pragma once
 
 #include <cstdint>
@@ -16,10 +16,13 @@
 namespace rsaa {
 
 // Which rule produced a table entry. Scene: fitted on cases harvested from a scene's renders
-// (rsaa train --from-scene); an addition to DESIGN.md section 3's three values.
+// (rsaa train --from-scene); an addition to docs/conventions.md section 3's three values.
 enum class OffsetSource { OneLine, TwoLine, Fallback, Scene };
 constexpr int kOffsetSourceCount = 4;
 const char* to_string(OffsetSource source);  // "one-line", "two-line", "fallback", "scene"
+
+// Read budget of a table file: the 16x table is under 3 MB.
+constexpr std::uint64_t kMaxTableFileBytes = std::uint64_t{16} << 20;
 
 // Tables are 2^n entries; beyond 16 samples they stop being practical lookup tables.
 constexpr int kMaxTableSamples = 16;
@@ -56,7 +59,9 @@ std::string offset_table_glsl(const OffsetTable& table);
 std::string offset_table_hlsl(const OffsetTable& table);
 
 // Writes DIR/STEM.json, DIR/STEM.glsl and DIR/STEM.hlsl together (all or none); STEM is the
-// pattern name unless given. Returns the paths.
+// pattern name unless given. Refuses (std::invalid_argument) a stem or pattern name that is not
+// a valid pattern name and a table the reader would refuse (non-finite or |offset| > 1).
+// Returns the paths.
 std::vector<std::string> write_offset_table_files(const OffsetTable& table, const std::string& dir,
                                                   const std::string& stem = "");
 

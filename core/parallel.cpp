@@ -5,6 +5,7 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -21,7 +22,7 @@ void parallel_for(std::uint64_t count, std::uint64_t chunk, int threads,
   chunk = std::max<std::uint64_t>(chunk, 1);
   std::atomic<std::uint64_t> next{0};
   std::atomic<std::uint64_t> done{0};
-  std::atomic<int> running{threads};
+  std::atomic<int> running{0};
   std::exception_ptr error;
   std::mutex error_mutex;
 
@@ -42,8 +43,22 @@ void parallel_for(std::uint64_t count, std::uint64_t chunk, int threads,
     --running;
   };
 
+  // Under a process limit (ulimit -u) threads may not start: the loop goes on with those that
+  // did, or on this thread alone; results never depend on the thread count.
   std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (int t = 0; t < threads; ++t) {
+    ++running;
+    try {
+      pool.emplace_back(worker);
+    } catch (const std::system_error&) {
+      --running;
+      break;
+    }
+  }
+  if (pool.empty()) {
+    running = 1;
+    worker();
+  }
   if (progress) {
     while (running > 0) {
       progress(std::min(done.load(), count), count);

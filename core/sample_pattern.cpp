@@ -1,6 +1,7 @@
 #include "core/sample_pattern.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -59,7 +60,19 @@ SamplePattern builtin_pattern(const std::string& name) {
                               "' (known: " + joined_builtin_names() + ")");
 }
 
+bool is_valid_pattern_name(const std::string& name) {
+  if (name.empty() || name.size() > kMaxPatternNameLength) return false;
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') return false;
+  return true;
+}
+
 SamplePattern pattern_from_positions(const std::string& name, const std::vector<Vec2>& positions) {
+  // The name becomes file names and shader identifiers: no path separators, no newlines.
+  if (!is_valid_pattern_name(name))
+    throw std::invalid_argument("pattern name '" + name + "' must be 1 to " +
+                                std::to_string(kMaxPatternNameLength) +
+                                " letters, digits, '-' or '_'");
   if (positions.empty() || positions.size() > static_cast<std::size_t>(kMaxPatternSamples))
     throw std::invalid_argument("pattern '" + name + "' has " + std::to_string(positions.size()) +
                                 " samples; expected 1 to 64");
@@ -68,6 +81,18 @@ SamplePattern pattern_from_positions(const std::string& name, const std::vector<
     if (!is_finite(p) || std::abs(p.x) > 0.5 || std::abs(p.y) > 0.5)
       throw std::invalid_argument("pattern '" + name + "': sample " + std::to_string(i) +
                                   " is not a finite point of the pixel [-0.5, 0.5]^2");
+    // Coordinates finer than the resolution step (subnormals, 1e-300) make the trainer's
+    // geometry degenerate; hardware positions are on a 1/16 or 1/256 grid anyway.
+    for (double c : {p.x, p.y})
+      if (c != 0.0 && std::abs(c) < kMinSampleSpacing)
+        throw std::invalid_argument("pattern '" + name + "': sample " + std::to_string(i) +
+                                    " has a coordinate closer to 0 than " +
+                                    std::to_string(kMinSampleSpacing) + " but not 0");
+    for (std::size_t k = 0; k < i; ++k)
+      if (std::max(std::abs(p.x - positions[k].x), std::abs(p.y - positions[k].y)) < kMinSampleSpacing)
+        throw std::invalid_argument("pattern '" + name + "': samples " + std::to_string(k) +
+                                    " and " + std::to_string(i) + " are closer than " +
+                                    std::to_string(kMinSampleSpacing) + " (coincident)");
   }
   return SamplePattern{name, positions};
 }
@@ -86,8 +111,20 @@ PixelStep outside_pixel_towards(Vec2 sample) {
   return {int(std::lround(sample.x / scale)), int(std::lround(sample.y / scale))};
 }
 
+int representative_dissimilar(const SamplePattern& pattern, Mask mask) {
+  int best = -1;
+  double best_distance = -1.0;
+  for (int i = 0; i < pattern.size(); ++i) {
+    const Vec2 s = pattern.positions[i];
+    const double d = s.x * s.x + s.y * s.y;
+    if (!is_similar(mask, i) && d >= best_distance) best = i, best_distance = d;
+  }
+  return best;
+}
+
 bool is_known_pattern_name(const std::string& name) {
-  return is_builtin_pattern(name) || name == "gl4x" || name.rfind("custom-", 0) == 0;
+  return is_builtin_pattern(name) || name == "gl4x" ||
+         (name.rfind("custom-", 0) == 0 && name.size() > 7 && is_valid_pattern_name(name));
 }
 
 }  // namespace rsaa

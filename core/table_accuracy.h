@@ -1,5 +1,5 @@
-// Accuracy of an offset table on a case set (DESIGN.md section 2): case error = estimate at the
-// table's offset - exact coverage, summarised per case kind, per source rule, and beside two
+// Accuracy of an offset table on a case set (docs/conventions.md section 2): case error = estimate
+// at the table's offset - exact coverage, summarised per case kind, per source rule, and beside two
 // baselines on the same cases (zero offset = no anti-aliasing; the fallback rule everywhere).
 #pragma once
 

@@ -217,10 +217,31 @@ Scene interpenetrating() {
   return s;
 }
 
+Scene grazing() {
+  // Objects resting on a large plain floor seen from a low camera: most of the floor lies under
+  // 15 degrees of elevation, so a silhouette over it has both surfaces nearly edge-on along the
+  // view ray (where SADP alone finds no edge). The floor is one colour: its edges are the objects'.
+  Scene s;
+  MeshBuilder m(s);
+  m.quad({-40, 0, -60}, {-40, 0, 20}, {40, 0, 20}, {40, 0, -60}, {0.7f, 0.66f, 0.55f});
+  m.sphere({-1.6f, 0.7f, 0.0f}, 0.7f, 24, 48, kRed);
+  m.sphere({1.2f, 0.45f, -3.0f}, 0.45f, 20, 40, kGreen);
+  m.sphere({-0.6f, 0.3f, -7.0f}, 0.3f, 16, 32, kYellow);
+  m.box(glm::rotate(glm::translate(glm::mat4(1), {1.4f, 0.5f, 1.2f}), 0.5f, glm::vec3(0, 1, 0)),
+        {0.5f, 0.5f, 0.5f}, kBlue);
+  m.box(glm::rotate(glm::translate(glm::mat4(1), {-3.2f, 0.25f, -4.5f}), 0.3f, glm::vec3(0, 1, 0)),
+        {1.2f, 0.25f, 0.4f}, kGrey);
+  m.cylinder({2.8f, 0.0f, -1.5f}, {2.8f, 1.6f, -1.5f}, 0.25f, 24, kWhite);
+  m.cylinder({-4.0f, 0.15f, -0.5f}, {-1.0f, 0.15f, 2.5f}, 0.15f, 16, kGreen);  // a log lying down
+  s.camera = look({0.0f, 0.75f, 5.5f}, {0.0f, 0.35f, -4.0f}, 45.0f, 0.3f, 100.0f);
+  return s;
+}
+
 const std::map<std::string, std::function<Scene()>>& generators() {
   static const std::map<std::string, std::function<Scene()>> g = {
       {"default", showcase}, {"fence", fence},     {"star", star},
       {"edges", edges},      {"distant", distant}, {"interpenetrating", interpenetrating},
+      {"grazing", grazing},
   };
   return g;
 }

@@ -31,7 +31,7 @@ Camera orbit_camera(const Camera& camera, double degrees);
 Camera parse_camera(const std::string& text, const glm::vec3& scene_lo, const glm::vec3& scene_hi);
 
 // Window-space translation (pixels, +y up) that puts the point at pixel-space offset `s` (+y
-// down, DESIGN.md section 1) of every pixel onto that pixel's centre, as NDC units.
+// down, docs/conventions.md section 1) of every pixel onto that pixel's centre, as NDC units.
 glm::vec2 jitter_ndc_for_sample(double sx, double sy, int width, int height);
 
 }  // namespace rsaa

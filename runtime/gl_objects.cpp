@@ -1,5 +1,8 @@
 #include "runtime/gl_objects.h"
 
+#include <cstdio>
+#include <stdexcept>
+
 #include "runtime/gl_context.h"
 
 namespace rsaa::gl {
@@ -126,6 +129,96 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
   }
   check(label.c_str());
   return program;
+}
+
+}  // namespace rsaa::gl
+
+namespace rsaa::gl {
+
+SavedState::SavedState(int texture_units) {
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
+  glGetIntegerv(GL_VIEWPORT, viewport_);
+  glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+  depth_test_ = glIsEnabled(GL_DEPTH_TEST);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
+  glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
+  blend_ = glIsEnabled(GL_BLEND);
+  scissor_ = glIsEnabled(GL_SCISSOR_TEST);
+  glGetBooleani_v(GL_COLOR_WRITEMASK, 0, colour_mask_);
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
+  textures_2d_.resize(std::size_t(texture_units));
+  texture_arrays_.resize(std::size_t(texture_units));
+  for (int unit = 0; unit < texture_units; ++unit) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &textures_2d_[std::size_t(unit)]);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture_arrays_[std::size_t(unit)]);
+  }
+  glActiveTexture(GLenum(active_texture_));
+}
+
+SavedState::~SavedState() {
+  for (std::size_t unit = 0; unit < textures_2d_.size(); ++unit) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, GLuint(textures_2d_[unit]));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(texture_arrays_[unit]));
+  }
+  glActiveTexture(GLenum(active_texture_));
+  glBindVertexArray(GLuint(vertex_array_));
+  blend_ ? glEnable(GL_BLEND) : glDisable(GL_BLEND);
+  scissor_ ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
+  glColorMaski(0, colour_mask_[0], colour_mask_[1], colour_mask_[2], colour_mask_[3]);
+  glDepthFunc(GLenum(depth_func_));
+  glDepthMask(depth_mask_);
+  depth_test_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
+  glUseProgram(GLuint(program_));
+  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read_framebuffer_));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw_framebuffer_));
+}
+
+void set_pass_state(bool depth_test) {
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  depth_test ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
+}
+
+namespace {
+
+std::string format_name(GLenum format) {
+  switch (format) {
+    case GL_RGBA16F: return "GL_RGBA16F";
+    case GL_RG16UI: return "GL_RG16UI";
+    case GL_R32UI: return "GL_R32UI";
+    case GL_DEPTH_COMPONENT32F: return "GL_DEPTH_COMPONENT32F";
+  }
+  char hex[24];
+  std::snprintf(hex, sizeof hex, "format 0x%04X", unsigned(format));
+  return hex;
+}
+
+}  // namespace
+
+void require_texture(GLuint texture, GLenum internal_format, int width, int height,
+                     const std::string& what) {
+  const std::string needs = ", needs a " + std::to_string(width) + "x" + std::to_string(height) +
+                            " " + format_name(internal_format) + " 2D texture";
+  if (texture == 0 || !glIsTexture(texture))
+    throw std::invalid_argument(what + ": " + std::to_string(texture) + " is not a texture" + needs);
+  GLint target = 0, format = 0, w = 0, h = 0;
+  glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &target);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
+  if (target != GL_TEXTURE_2D || GLenum(format) != internal_format || w != width || h != height)
+    throw std::invalid_argument(what + ": texture " + std::to_string(texture) + " is a " +
+                                std::to_string(w) + "x" + std::to_string(h) + " " +
+                                format_name(GLenum(format)) +
+                                (target == GL_TEXTURE_2D ? "" : " non-2D") + " texture" + needs);
 }
 
 }  // namespace rsaa::gl

@@ -83,3 +83,35 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
                      const std::string& label);
 
 }  // namespace rsaa::gl
+
+namespace rsaa::gl {
+
+// Saves on construction and restores on destruction the GL state a pass changes: framebuffer
+// bindings, viewport, current program, depth test/function/mask, blending, scissor test, colour
+// mask 0, the vertex array and the 2D / 2D-array textures of units [0, texture_units). So that
+// a pass dropped into an engine leaves the engine's state as it found it.
+class SavedState {
+ public:
+  explicit SavedState(int texture_units);
+  ~SavedState();
+  SavedState(const SavedState&) = delete;
+  SavedState& operator=(const SavedState&) = delete;
+
+ private:
+  GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, viewport_[4] = {}, program_ = 0;
+  GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, blend_ = GL_FALSE, scissor_ = GL_FALSE;
+  GLboolean colour_mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+  GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;
+  std::vector<GLint> textures_2d_, texture_arrays_;
+};
+
+// The state a pass draws with, whatever the engine left: clears and writes reach every pixel
+// (no scissor, all masks on), no blending, depth test on (GL_LESS) or off.
+void set_pass_state(bool depth_test);
+
+// Throws std::invalid_argument naming `what` unless `texture` is an existing 2D texture of
+// `internal_format` and width x height (a missing or wrong binding is an error, not garbage).
+void require_texture(GLuint texture, GLenum internal_format, int width, int height,
+                     const std::string& what);
+
+}  // namespace rsaa::gl

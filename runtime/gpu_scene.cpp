@@ -1,6 +1,9 @@
 #include "runtime/gpu_scene.h"
 
 #include <cstddef>
+#include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "runtime/gl_context.h"
 
@@ -51,10 +54,27 @@ GpuScene::GpuScene(const Scene& scene)
     glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_REPEAT);
     textures_.emplace_back(tex);
   }
+  if (scene.point_lights.size() > std::size_t(kMaxScenePointLights))
+    throw std::invalid_argument("a scene has at most " + std::to_string(kMaxScenePointLights) + " point lights");
+  // std140 ScenePointLights of shaders/shading.glsl: count, then positions+radii, then colours.
+  std::vector<float> block(4 + 8 * kMaxScenePointLights, 0.0f);
+  const int count = int(scene.point_lights.size());
+  std::memcpy(block.data(), &count, sizeof count);
+  for (int i = 0; i < count; ++i) {
+    const PointLight& p = scene.point_lights[i];
+    float* position = &block[4 + 4 * i];
+    float* colour = &block[4 + 4 * kMaxScenePointLights + 4 * i];
+    position[0] = p.position.x, position[1] = p.position.y, position[2] = p.position.z, position[3] = p.radius;
+    colour[0] = p.colour.r, colour[1] = p.colour.g, colour[2] = p.colour.b;
+  }
+  glCreateBuffers(1, &id);
+  point_lights_ = gl::Buffer(id);
+  glNamedBufferStorage(id, GLsizeiptr(block.size() * sizeof(float)), block.data(), 0);
   gl::check("uploading the scene");
 }
 
 void GpuScene::draw(GLuint program) const {
+  glBindBufferBase(GL_UNIFORM_BUFFER, 4, point_lights_.get());
   glBindVertexArray(vao_.get());
   const GLint has_texture = glGetUniformLocation(program, "u_has_texture");
   const GLint primitive_base = glGetUniformLocation(program, "u_primitive_base");

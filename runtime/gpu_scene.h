@@ -16,7 +16,8 @@ class GpuScene {
 
   // Draws every triangle with `program` bound. Attribute locations: 0 position, 1 normal, 2 uv,
   // 3 albedo, 4 filter alpha. Sets u_texture (unit 0), u_has_texture and u_primitive_base (so that primitive ids
-  // are unique across draw calls) when the program has them.
+  // are unique across draw calls) when the program has them. Binds the point lights (uniform
+  // block binding 4) for every shading pass that follows.
   void draw(GLuint program) const;
 
   glm::vec3 background() const { return background_; }
@@ -24,7 +25,7 @@ class GpuScene {
 
  private:
   gl::VertexArray vao_;
-  gl::Buffer vertices_, indices_;
+  gl::Buffer vertices_, indices_, point_lights_;
   std::vector<gl::Texture> textures_;
   std::vector<DrawRange> draws_;
   glm::vec3 background_;

@@ -1,18 +1,24 @@
 // Models through assimp: triangles only, transforms baked in, smooth normals generated where
 // missing, diffuse/base colour and its texture per material.
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <new>
+#include <sstream>
 #include <stdexcept>
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
+#include "core/atomic_file.h"
 #include "core/colour.h"
+#include "core/image_io.h"
 #include "runtime/scene.h"
 
 namespace rsaa {
@@ -20,24 +26,132 @@ namespace {
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Decodes an image file or an in-memory (embedded) image into 8-bit RGBA.
-TextureImage read_texture(const std::string& name, const void* data = nullptr, std::size_t size = 0) {
-  OIIO::Filesystem::IOMemReader memory(data, size);
-  std::unique_ptr<OIIO::ImageInput> in =
-      OIIO::ImageInput::open(name, nullptr, data ? &memory : nullptr);
-  if (!in) throw std::runtime_error("cannot read texture " + name + " (" + OIIO::geterror() + ")");
-  const OIIO::ImageSpec& spec = in->spec();
-  TextureImage t{spec.width, spec.height, {}};
-  std::vector<std::uint8_t> raw(std::size_t(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data()))
-    throw std::runtime_error("cannot decode texture " + name);
-  t.rgba.resize(std::size_t(spec.width) * spec.height * 4);
-  for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
-    for (int c = 0; c < 4; ++c)
-      t.rgba[4 * i + c] = c < spec.nchannels ? raw[i * spec.nchannels + c]
-                          : c == 3           ? 255
-                                             : raw[i * spec.nchannels];
+// Decoded texture in 8-bit sRGB RGBA (straight alpha, as textures are sampled).
+TextureImage to_texture(const DecodedImage& d) {
+  TextureImage t{d.width, d.height, std::vector<std::uint8_t>(d.rgba.size())};
+  for (std::size_t i = 0; i < d.rgba.size(); ++i) {
+    const float v = d.rgba[i];
+    const bool colour = i % 4 != 3;
+    t.rgba[i] = colour && d.float_format
+                    ? linear_to_srgb8(v)
+                    : static_cast<std::uint8_t>(std::lround(std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f) * 255.0f));
+  }
   return t;
+}
+
+// Every file assimp opens (the model, and the .mtl, .bin, ... it refers to) must be a regular
+// file within the budget: a FIFO or /dev/zero would block or never end. The reason for a refusal
+// is kept, since assimp reports only that the file could not be opened.
+class BoundedIOSystem : public Assimp::DefaultIOSystem {
+ public:
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
+    try {
+      check_regular_file(file, kMaxModelFileBytes, "model file");
+    } catch (const LimitError& e) {
+      if (refusal.empty()) refusal = e.what();
+      return nullptr;
+    } catch (const std::runtime_error&) {
+      return nullptr;  // missing: assimp decides whether that matters
+    }
+    return DefaultIOSystem::Open(file, mode);
+  }
+  // DefaultIOSystem::Exists opens the file with fopen, which waits forever on a FIFO.
+  bool Exists(const char* file) const override {
+    struct stat st {};
+    return ::stat(file, &st) == 0;
+  }
+  std::string refusal;
+};
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// Element counts that a header declares, checked against the bytes that could hold them before
+// the importer allocates for them (assimp 5.2 trusts them: OutOfMemory.off asks for 24 GB).
+// OFF: each vertex takes at least 6 bytes ("0 0 0\n"), each face 8 ("3 0 1 2\n"). PLY: each
+// property at least 2 bytes in ASCII, its size in binary.
+void check_declared_counts(const std::string& path, const std::string& what, std::uint64_t file_size) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".off" && ext != ".ply") return;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(std::size_t(std::min<std::uint64_t>(file_size, 64 * 1024)), '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  const auto too_many = [&](const std::string& element, long double count, long double min_bytes) {
+    if (count * min_bytes > (long double)file_size)
+      throw std::runtime_error(what + ": declares " + element + " that need at least " +
+                               std::to_string((unsigned long long)std::min(count * min_bytes, 1e19L)) +
+                               " bytes; the file has " + std::to_string(file_size));
+  };
+  std::istringstream lines(head);
+  std::string line;
+  if (ext == ".off") {
+    std::vector<long double> counts;
+    bool header = false;
+    while (counts.size() < 2 && std::getline(lines, line)) {
+      line = line.substr(0, line.find('#'));
+      std::istringstream words(line);
+      std::string word;
+      while (counts.size() < 2 && words >> word) {
+        if (!header && word.find("OFF") != std::string::npos) {
+          header = true;
+          continue;
+        }
+        char* end = nullptr;
+        const long double v = std::strtold(word.c_str(), &end);
+        if (*end != '\0' || !(v >= 0)) return;  // not a count: the importer reports it
+        counts.push_back(v);
+      }
+    }
+    if (counts.size() == 2) {
+      too_many(std::to_string((unsigned long long)std::min(counts[0], 1e19L)) + " vertices", counts[0], 6);
+      too_many(std::to_string((unsigned long long)std::min(counts[1], 1e19L)) + " faces", counts[1], 8);
+    }
+    return;
+  }
+  // PLY
+  bool binary = false;
+  long double needed = 0, count = 0, per_element = 0;
+  std::string element_text;
+  const auto size_of = [&](const std::string& type) -> long double {
+    if (!binary) return 2;
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "double" || type == "float64") return 8;
+    return 4;
+  };
+  const auto close_element = [&] { needed += count * per_element; };
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    if (key == "format") {
+      std::string kind;
+      words >> kind;
+      binary = kind.rfind("binary", 0) == 0;
+    } else if (key == "element") {
+      close_element();
+      std::string name, number;
+      words >> name >> number;
+      char* end = nullptr;
+      count = std::strtold(number.c_str(), &end);
+      if (*end != '\0' || !(count >= 0)) return;
+      per_element = 0;
+      element_text = number + " " + name + " elements";
+    } else if (key == "property") {
+      std::string type;
+      words >> type;
+      per_element += size_of(type == "list" ? (words >> type, type) : type);
+    } else if (key == "end_header") {
+      close_element();
+      too_many("elements (" + element_text + " and others)", needed, 1);
+      return;
+    }
+  }
 }
 
 glm::vec3 material_albedo(const aiMaterial* material) {
@@ -53,19 +167,48 @@ glm::vec3 material_albedo(const aiMaterial* material) {
 
 Scene load_model(const std::string& path) {
   const std::string what = "model '" + path + "'";
-  if (!std::filesystem::exists(path)) throw std::runtime_error(what + ": file not found");
-  if (std::filesystem::is_directory(path)) throw std::runtime_error(what + ": is a directory");
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw std::runtime_error(what + ": file not found");
+  std::uint64_t file_size = 0;
+  try {
+    file_size = check_regular_file(path, kMaxModelFileBytes, "model file");
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(what + ": " + e.what());
+  }
+  check_declared_counts(path, what, file_size);
   Assimp::Importer importer;
-  const aiScene* ai = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
-                aiProcess_SortByPType | aiProcess_JoinIdenticalVertices | aiProcess_FindDegenerates);
+  auto* io = new BoundedIOSystem;
+  importer.SetIOHandler(io);  // the importer owns it
+  const aiScene* ai = nullptr;
+  try {
+    ai = importer.ReadFile(
+        path, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
+                  aiProcess_SortByPType | aiProcess_JoinIdenticalVertices | aiProcess_FindDegenerates);
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(what + ": out of memory while importing (the sizes it declares do "
+                             "not fit in the memory available)");
+  }
+  // A file the model refers to that was refused (a FIFO, a device, over the budget) refuses
+  // the model too, even when the importer would go on without it.
+  if (!io->refusal.empty()) throw std::runtime_error(what + ": " + io->refusal);
   if (!ai || !ai->mRootNode) throw std::runtime_error(what + ": " + importer.GetErrorString());
+
+  // The copy below allocates per vertex and index: counted first, against the budget.
+  std::uint64_t vertex_total = 0, face_total = 0;
+  for (unsigned k = 0; k < ai->mNumMeshes; ++k)
+    vertex_total += ai->mMeshes[k]->mNumVertices, face_total += ai->mMeshes[k]->mNumFaces;
+  if (vertex_total > kMaxSceneVertices || face_total > kMaxSceneTriangles)
+    throw std::runtime_error(what + ": " + std::to_string(vertex_total) + " vertices and " +
+                             std::to_string(face_total) + " faces; the limit is " +
+                             std::to_string(kMaxSceneVertices) + " vertices and " +
+                             std::to_string(kMaxSceneTriangles) + " faces");
 
   Scene scene;
   scene.name = path;
   std::vector<int> texture_of_material(ai->mNumMaterials, -1);
   std::vector<glm::vec3> albedo_of_material(ai->mNumMaterials, glm::vec3(0.8f));
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  std::uint64_t texels = 0;
   for (unsigned m = 0; m < ai->mNumMaterials; ++m) {
     const aiMaterial* material = ai->mMaterials[m];
     albedo_of_material[m] = material_albedo(material);
@@ -73,17 +216,33 @@ Scene load_model(const std::string& path) {
     if (material->GetTexture(aiTextureType_BASE_COLOR, 0, &file) != aiReturn_SUCCESS &&
         material->GetTexture(aiTextureType_DIFFUSE, 0, &file) != aiReturn_SUCCESS)
       continue;
+    // A texture that is missing or cannot be decoded leaves the material's colour (the geometry
+    // is still worth drawing); one that is not a regular file or is over the budget refuses the
+    // model, as every other reader does.
+    std::string texture_name;
     try {
+      DecodedImage decoded;
       if (const aiTexture* embedded = ai->GetEmbeddedTexture(file.C_Str())) {
         if (embedded->mHeight != 0) continue;  // raw texel arrays: not used by the test models
-        const std::string hint = std::string("embedded.") + embedded->achFormatHint;
-        scene.textures.push_back(read_texture(hint, embedded->pcData, embedded->mWidth));
+        texture_name = path + ": embedded texture " + std::string(file.C_Str());
+        const std::string bytes(reinterpret_cast<const char*>(embedded->pcData), embedded->mWidth);
+        decoded = decode_image(std::string("embedded.") + embedded->achFormatHint, bytes, kTextureBudget);
       } else {
-        scene.textures.push_back(read_texture((directory / file.C_Str()).string()));
+        texture_name = (directory / file.C_Str()).string();
+        if (!std::filesystem::exists(texture_name, ec)) continue;
+        decoded = decode_image(texture_name,
+                               read_whole_file(texture_name, kTextureBudget.file_bytes, "texture"),
+                               kTextureBudget);
       }
+      texels += std::uint64_t(decoded.width) * decoded.height;
+      if (texels > kMaxSceneTexels)
+        throw LimitError(texture_name + ": the textures of the model exceed " +
+                                 std::to_string(kMaxSceneTexels) + " texels in all");
+      scene.textures.push_back(to_texture(decoded));
       texture_of_material[m] = int(scene.textures.size()) - 1;
-    } catch (const std::exception&) {
-      // A missing texture leaves the material's colour; the geometry is still worth drawing.
+    } catch (const LimitError& e) {
+      throw std::runtime_error(what + ": " + e.what());
+    } catch (const std::runtime_error&) {
     }
   }
 
@@ -131,9 +290,7 @@ Scene load_model(const std::string& path) {
                              (dropped ? " (" + std::to_string(dropped) +
                                             " had non-finite or out-of-range vertices)"
                                       : ""));
-  const glm::vec3 extent = scene.bounds_max() - scene.bounds_min();
-  if (!(std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z)))
-    throw std::runtime_error(what + ": vertex positions overflow");
+  check_frameable(scene, what);
   return scene;
 }
 

@@ -1,5 +1,5 @@
-// Times of the passes of one frame (DESIGN.md section 5): GL timer queries, and the wall clock
-// between glFinish() calls. On llvmpipe the "GPU" is the CPU and its timer queries proved
+// Times of the passes of one frame (docs/conventions.md section 5): GL timer queries, and the wall
+// clock between glFinish() calls. On llvmpipe the "GPU" is the CPU and its timer queries proved
 // inconsistent between techniques, so the bench ranks by the wall clock; both are reported.
 #pragma once
 

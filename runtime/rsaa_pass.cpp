@@ -1,17 +1,35 @@
 #include "runtime/rsaa_pass.h"
 
+#include <algorithm>
 #include <regex>
 #include <stdexcept>
+#include <type_traits>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/conventions.h"
 #include "runtime/camera.h"
 #include "runtime/gl_context.h"
-#include "runtime/scene_renderer.h"
+#include "runtime/fullscreen.h"
+#include "runtime/gl_objects.h"
 #include "runtime/shader_library.h"
 
 namespace rsaa {
+
+static_assert(std::is_same_v<GlName, GLuint>, "rsaa_pass.h names GL objects as unsigned int");
+
+struct RsaaTargets::Objects {
+  gl::Texture colour, normal, primitive, depth;
+  gl::Framebuffer framebuffer;
+};
+
+struct RsaaPass::Objects {
+  gl::Texture codes, subsample_depth;
+  std::vector<gl::Framebuffer> subsample_targets;
+  gl::Program subsample_program, post_program;
+  gl::CachedFramebuffer resolve_target;
+};
+
 namespace {
 
 SamplePattern pattern_named(const std::string& name) {
@@ -52,6 +70,19 @@ void set_frame_uniforms(GLuint program, const RsaaFrame& frame, float threshold)
   glProgramUniform1f(program, glGetUniformLocation(program, "u_threshold"), threshold);
 }
 
+// A missing or mismatched texture in the engine's frame is an error naming the field.
+void validate_frame(const RsaaFrame& frame, int width, int height) {
+  if (frame.width != width || frame.height != height)
+    throw std::invalid_argument("RsaaFrame is " + std::to_string(frame.width) + "x" +
+                                std::to_string(frame.height) + ", the RsaaPass was made for " +
+                                std::to_string(width) + "x" + std::to_string(height));
+  gl::require_texture(frame.colour, GL_RGBA16F, width, height, "RsaaFrame::colour");
+  gl::require_texture(frame.centre_normal, GL_RG16UI, width, height, "RsaaFrame::centre_normal");
+  gl::require_texture(frame.centre_primitive, GL_R32UI, width, height, "RsaaFrame::centre_primitive");
+  gl::require_texture(frame.centre_depth, GL_DEPTH_COMPONENT32F, width, height,
+                      "RsaaFrame::centre_depth");
+}
+
 // The outside pixel of each subsample, converted to window space (+y up).
 glm::ivec2 window_step(Vec2 sample) {
   const PixelStep s = outside_pixel_towards(sample);
@@ -62,27 +93,35 @@ glm::ivec2 window_step(Vec2 sample) {
 }  // namespace
 
 RsaaTargets::RsaaTargets(int width, int height)
-    : width_(width),
-      height_(height),
-      colour_(gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR)),
-      normal_(gl::make_texture_2d(GL_RG16UI, width, height)),
-      primitive_(gl::make_texture_2d(GL_R32UI, width, height)),
-      depth_(gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height)),
-      framebuffer_(gl::make_framebuffer({{colour_.get()}, {normal_.get()}, {primitive_.get()}},
-                                        {depth_.get()})) {}
+    : width_(width), height_(height), gl_(std::make_unique<Objects>()) {
+  gl_->colour = gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR);
+  gl_->normal = gl::make_texture_2d(GL_RG16UI, width, height);
+  gl_->primitive = gl::make_texture_2d(GL_R32UI, width, height);
+  gl_->depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
+  gl_->framebuffer = gl::make_framebuffer(
+      {{gl_->colour.get()}, {gl_->normal.get()}, {gl_->primitive.get()}}, {gl_->depth.get()});
+}
+RsaaTargets::~RsaaTargets() = default;
+RsaaTargets::RsaaTargets(RsaaTargets&&) noexcept = default;
+RsaaTargets& RsaaTargets::operator=(RsaaTargets&&) noexcept = default;
+
+void RsaaTargets::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get()); }
+GlName RsaaTargets::colour() const { return gl_->colour.get(); }
 
 void RsaaTargets::clear(const float background[3]) const {
   const GLfloat colour[4] = {background[0], background[1], background[2], 1.0f};
   const GLuint zero[4] = {0, 0, 0, 0};
   const GLfloat far_depth = 1.0f;
-  glClearNamedFramebufferfv(framebuffer_.get(), GL_COLOR, 0, colour);
-  glClearNamedFramebufferuiv(framebuffer_.get(), GL_COLOR, 1, zero);
-  glClearNamedFramebufferuiv(framebuffer_.get(), GL_COLOR, 2, zero);
-  glClearNamedFramebufferfv(framebuffer_.get(), GL_DEPTH, 0, &far_depth);
+  const GLuint framebuffer = gl_->framebuffer.get();
+  glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, colour);
+  glClearNamedFramebufferuiv(framebuffer, GL_COLOR, 1, zero);
+  glClearNamedFramebufferuiv(framebuffer, GL_COLOR, 2, zero);
+  glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &far_depth);
 }
 
 RsaaFrame RsaaTargets::frame(const glm::mat4& inverse_projection) const {
-  return {colour_.get(), normal_.get(), primitive_.get(), depth_.get(), width_, height_, inverse_projection};
+  return {gl_->colour.get(), gl_->normal.get(), gl_->primitive.get(), gl_->depth.get(),
+          width_, height_, inverse_projection};
 }
 
 SamplePattern query_gl_sample_pattern(int samples) {
@@ -101,7 +140,11 @@ SamplePattern query_gl_sample_pattern(int samples) {
 }
 
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
-    : settings_(settings), pattern_(pattern_named(settings.pattern)), width_(width), height_(height) {
+    : settings_(settings),
+      pattern_(pattern_named(settings.pattern)),
+      width_(width),
+      height_(height),
+      gl_(std::make_unique<Objects>()) {
   if (settings.auth < 0 || settings.auth > 2)
     throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
   if (!(settings.threshold >= 0.0f)) throw std::invalid_argument("RSAA threshold must be >= 0");
@@ -117,32 +160,50 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                "); retrain it with rsaa train --pattern " + pattern_.name);
 
   const int n = pattern_.size();
-  codes_ = gl::make_texture_2d_array(code_format(settings.code_bits), width, height, n);
-  subsample_depth_ = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
+  gl_->codes = gl::make_texture_2d_array(code_format(settings.code_bits), width, height, n);
+  gl_->subsample_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
   for (int i = 0; i < n; ++i)
-    subsample_targets_.push_back(gl::make_framebuffer({{codes_.get(), i}}, {subsample_depth_.get()}));
+    gl_->subsample_targets.push_back(
+        gl::make_framebuffer({{gl_->codes.get(), i}}, {gl_->subsample_depth.get()}));
 
   std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(n) + "\n" +
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
                         "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n";
-  if (settings.depth_similarity) defines += "#define RSAA_SIMILARITY_DEPTH\n";
-  subsample_program_ = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
+  if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
+  else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
+  else if (settings.similarity != "sadp")
+    throw std::invalid_argument("RSAA similarity '" + settings.similarity +
+                                "' is not one of sadp, depth, sadp-plane");
+  gl_->subsample_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                          {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
                                          {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
                                         defines, "RSAA pre-pass");
   if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
-  post_program_ = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+  gl_->post_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
                                     {GL_FRAGMENT_SHADER, table + gl::shader_source("rsaa_post.frag")}},
                                    defines, "RSAA post-process");
   std::vector<glm::ivec2> steps;
   for (const Vec2& s : pattern_.positions) steps.push_back(window_step(s));
-  glProgramUniform2iv(post_program_.get(), glGetUniformLocation(post_program_.get(), "u_neighbours"),
-                      n, glm::value_ptr(steps[0]));
+  const GLuint post = gl_->post_program.get();
+  glProgramUniform2iv(post, glGetUniformLocation(post, "u_neighbours"), n, glm::value_ptr(steps[0]));
+  if (settings.auth == 1) {
+    std::vector<GLint> representative(std::size_t(1) << n);
+    for (std::size_t mask = 0; mask < representative.size(); ++mask)
+      representative[mask] = std::max(0, representative_dissimilar(pattern_, Mask(mask)));
+    glProgramUniform1iv(post, glGetUniformLocation(post, "u_representative"),
+                        GLsizei(representative.size()), representative.data());
+  }
   gl::check("creating the RSAA pass");
 }
+RsaaPass::~RsaaPass() = default;
+RsaaPass::RsaaPass(RsaaPass&&) noexcept = default;
+RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;
 
 void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
-  const GLuint program = subsample_program_.get();
+  validate_frame(frame, width_, height_);
+  const gl::SavedState saved(4);
+  gl::set_pass_state(true);  // before the clears: they obey the engine's scissor and masks
+  const GLuint program = gl_->subsample_program.get();
   set_frame_uniforms(program, frame, settings_.threshold);
   set_uniform(program, "u_centre_normal", 1);
   set_uniform(program, "u_centre_primitive", 2);
@@ -152,7 +213,7 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
   glBindTextureUnit(3, frame.centre_depth);
   const GLint neighbour = glGetUniformLocation(program, "u_neighbour");
   for (int i = 0; i < pattern_.size(); ++i) {
-    const GLuint fb = subsample_targets_[i].get();
+    const GLuint fb = gl_->subsample_targets[i].get();
     const GLuint zero[4] = {0, 0, 0, 0};
     const GLfloat far_depth = 1.0f;
     glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
@@ -161,20 +222,34 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
     const glm::ivec2 step = window_step(pattern_.positions[i]);
     glProgramUniform2i(program, neighbour, step.x, step.y);
     const Vec2 s = pattern_.positions[i];
+    gl::set_pass_state(true);  // again: the previous callback may have changed it
+    glViewport(0, 0, frame.width, frame.height);
+    glUseProgram(program);
     draw_geometry(program, jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height));
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (GLuint(current) != program)
+      throw std::logic_error("RSAA pre-pass: the draw callback drew with program " +
+                             std::to_string(current) + ", not the pre-pass program " +
+                             std::to_string(program) + " it was given");
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   gl::check("RSAA pre-pass");
 }
 
 void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
+  validate_frame(frame, width_, height_);
+  gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
+  if (settings_.output_mask && mask_output)
+    gl::require_texture(mask_output, GL_R32UI, width_, height_, "RsaaPass::resolve mask_output");
+  const gl::SavedState saved(4);
+  gl::set_pass_state(false);
   std::vector<gl::Attachment> targets = {{output}};
   if (settings_.output_mask) {
     if (!mask_output) throw std::invalid_argument("RSAA resolve: output_mask set but no mask texture");
     targets.push_back({mask_output});
   }
-  const GLuint fb = resolve_target_.get(targets);
-  const GLuint program = post_program_.get();
+  const GLuint fb = gl_->resolve_target.get(targets);
+  const GLuint program = gl_->post_program.get();
   set_frame_uniforms(program, frame, settings_.threshold);
   set_uniform(program, "u_colour", 0);
   set_uniform(program, "u_centre_normal", 1);
@@ -183,7 +258,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   glBindTextureUnit(0, frame.colour);
   glBindTextureUnit(1, frame.centre_normal);
   glBindTextureUnit(2, frame.centre_depth);
-  glBindTextureUnit(3, codes_.get());
+  glBindTextureUnit(3, gl_->codes.get());
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);
   glUseProgram(program);

@@ -1,59 +1,98 @@
-// The RSAA pass as an engine would drop it in (the one public header of the runtime's RSAA):
-// per-subsample similarity pre-pass + post-process, for any of the 12 variants of the paper.
+// The RSAA pass as an engine drops it in: per-subsample similarity pre-pass + post-process, for
+// any of the 12 variants of the paper. The public header of rsaa::pass.
 //
-// The engine renders its 1x frame into four targets of width x height:
-//   colour            RGBA16F (linear), GL_LINEAR filtering, clamp to edge
-//   centre_normal     RG16UI: rsaa_encode_normal(geometric normal) (0 = background)
-//   centre_primitive  R32UI: unique triangle id + 1 (0 = background); drives the shortcut
-//   centre_depth      DEPTH_COMPONENT32F
-// (SceneRenderer::gbuffer_program() writes exactly these; shaders/scene_shade.frag shows how;
-// RsaaTargets allocates them.)
-// Then it calls render_subsamples() with a callback that draws its geometry once per subsample
-// with the program given (vertex attributes: 0 position, 1 normal, 2 uv, 3 albedo; uniforms
-// u_view, u_projection, u_jitter_ndc), and resolve() into its output texture.
+// GL LOADER. This header includes no GL header: GL object names are plain `unsigned int` (what
+// every GL header typedefs GLuint to), so it compiles beside epoxy, glad, GLEW or the Khronos
+// headers alike. The library calls GL through libepoxy internally; epoxy resolves entry points
+// for whichever context is current (EGL or GLX), so it coexists with the engine's own loader.
+// Every call, the destructors included, needs the OpenGL 4.5 core context the object was made
+// in to be current on the calling thread.
+//
+// THE FRAME. The engine renders its 1x frame into four textures of the pass's width x height:
+//   colour            GL_RGBA16F (linear light), GL_LINEAR filtering, clamp to edge
+//   centre_normal     GL_RG16UI: rsaa_encode_normal(geometric normal, view space); 0 = background
+//   centre_primitive  GL_R32UI: primitive id + 1 of the triangle seen (0 = background); the
+//                     pre-pass compares it with u_primitive_base + gl_PrimitiveID + 1
+//   centre_depth      GL_DEPTH_COMPONENT32F, the depth of the same draw
+// rsaa_encode_normal() is in shaders/rsaa_common.glsl (installed in share/rsaa/shaders);
+// RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
+// and resolve() check the four (name, format, size) and throw std::invalid_argument naming the
+// field, so a forgotten or wrong binding is an error, not a wrong image.
+//
+// THE PRE-PASS CALLBACK. render_subsamples() calls `draw_geometry(program, jitter_ndc)` once
+// per subsample, with its own framebuffer bound, `program` current, the viewport set to the
+// frame, depth test on (GL_LESS, depth writes on), blending and scissor test off. The callback
+// draws the same geometry as the 1x frame with `program` (render_subsamples() throws
+// std::logic_error if another program is current when it returns), after setting on it:
+//   vertex attributes  0 position (vec3, world space: the pre-pass applies no model matrix,
+//                      so instanced, skinned or morphed geometry is baked into a buffer first,
+//                      as examples/02_own_vertex_stage.cpp does), 1 normal, 2 uv, 3 albedo
+//                      (only 0 matters to the pre-pass; the others may stay disabled)
+//   u_view, u_projection (mat4)   the frame's camera, unjittered
+//   u_jitter_ndc (vec2)           = jitter_ndc: the image translation that puts this subsample
+//                                   on the pixel centre
+//   u_primitive_base (uint)       first primitive id of this draw call as written into
+//                                 centre_primitive (0 for one draw per frame; default 0)
+// The pass sets every other uniform and texture of its own programs.
+//
+// GL STATE. Both calls restore what they change: framebuffer bindings, viewport, current
+// program, depth test/function/mask, blending, scissor test, colour mask 0, the vertex array and
+// the textures bound to units 0-3; the engine's scissor and masks do not reach the pass.
+// Textures and programs they create belong to the RsaaPass object.
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include <glm/glm.hpp>
 
 #include "core/sample_pattern.h"
-#include "runtime/gl_objects.h"
 
 namespace rsaa {
 
+// A GL object name (GLuint) without including a GL header.
+using GlName = unsigned int;
+
 struct RsaaSettings {
   std::string pattern = "d3d8x";  // d3d8x | d3d4x | gl4x (the driver's 4x pattern)
-  bool depth_similarity = false;  // false: SADP (paper), true: depth difference
+  // sadp: the paper's SADP; depth: the paper's depth alternative (relative depth difference);
+  // sadp-plane (ours): SADP or the gap between the surfaces' planes along the view ray, whichever
+  // is larger, so that silhouettes over surfaces seen at grazing angles are found.
+  std::string similarity = "sadp-plane";
   int auth = 0;                   // 0 none, 1 post-pass (halve offsets), 2 pre-pass (reclassify)
-  float threshold = 0.4f;         // SADP units, or percent of depth with depth_similarity
+  float threshold = 0.4f;         // SADP units (sadp, sadp-plane), or percent of depth (depth)
   int code_bits = 8;              // 8 | 16 | 32: storage per subsample similarity
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
 };
 
+// The engine's 1x frame (formats above). inverse_projection is that of the unjittered camera.
 struct RsaaFrame {
-  GLuint colour = 0, centre_normal = 0, centre_primitive = 0, centre_depth = 0;
+  GlName colour = 0, centre_normal = 0, centre_primitive = 0, centre_depth = 0;
   int width = 0, height = 0;
-  glm::mat4 inverse_projection{1.0f};  // unjittered
+  glm::mat4 inverse_projection{1.0f};
 };
 
 // The four 1x targets above, allocated, for an engine that has none of its own.
 class RsaaTargets {
  public:
   RsaaTargets(int width, int height);
+  ~RsaaTargets();
+  RsaaTargets(RsaaTargets&&) noexcept;
+  RsaaTargets& operator=(RsaaTargets&&) noexcept;
+
   // Colour to `background` (linear RGB), normal and primitive to 0 (background), depth to 1.
   void clear(const float background[3]) const;
-  // Binds the framebuffer: colour at location 0, normal 1, primitive 2, and depth.
-  void bind() const { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get()); }
+  // Binds the framebuffer to GL_FRAMEBUFFER: colour at location 0, normal 1, primitive 2, depth.
+  void bind() const;
   RsaaFrame frame(const glm::mat4& inverse_projection) const;
   static constexpr double kBytesPerPixel = 8 + 4 + 4 + 4;
-  GLuint colour() const { return colour_.get(); }
+  GlName colour() const;
 
  private:
+  struct Objects;  // GL objects, defined in rsaa_pass.cpp
   int width_, height_;
-  gl::Texture colour_, normal_, primitive_, depth_;
-  gl::Framebuffer framebuffer_;
+  std::unique_ptr<Objects> gl_;
 };
 
 // The 4x pattern of this GL driver, in pixel space (needs a current context).
@@ -61,29 +100,30 @@ SamplePattern query_gl_sample_pattern(int samples = 4);
 
 class RsaaPass {
  public:
-  using DrawGeometry = std::function<void(GLuint program, glm::vec2 jitter_ndc)>;
+  using DrawGeometry = std::function<void(GlName program, glm::vec2 jitter_ndc)>;
 
   // Needs a current GL 4.5 context. Throws std::invalid_argument for bad settings and
   // std::runtime_error when the baked table does not match the pattern's positions.
   RsaaPass(const RsaaSettings& settings, int width, int height);
+  ~RsaaPass();
+  RsaaPass(RsaaPass&&) noexcept;
+  RsaaPass& operator=(RsaaPass&&) noexcept;
 
   void render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry);
-  // Writes the anti-aliased colour into `output` (RGBA16F), and the mask into `mask_output`
-  // (R32UI) when settings.output_mask.
-  void resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output = 0);
+  // Writes the anti-aliased colour into `output` (RGBA16F, the frame's size), and the mask into
+  // `mask_output` (R32UI) when settings.output_mask.
+  void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
 
   const SamplePattern& pattern() const { return pattern_; }
   // Bytes per pixel of the similarity codes this pass keeps.
   double code_bytes_per_pixel() const { return pattern_.size() * settings_.code_bits / 8.0; }
 
  private:
+  struct Objects;  // GL objects, defined in rsaa_pass.cpp
   RsaaSettings settings_;
   SamplePattern pattern_;
   int width_, height_;
-  gl::Texture codes_, subsample_depth_;
-  std::vector<gl::Framebuffer> subsample_targets_;
-  gl::Program subsample_program_, post_program_;
-  gl::CachedFramebuffer resolve_target_;
+  std::unique_ptr<Objects> gl_;
 };
 
 }  // namespace rsaa

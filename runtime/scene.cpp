@@ -1,12 +1,25 @@
 #include "runtime/scene.h"
 
+#include <pthread.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <stdexcept>
+#include <condition_variable>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <exception>
 #include <future>
+#include <stdexcept>
 #include <limits>
 #include <memory>
-#include <thread>
+#include <mutex>
+#include <stdexcept>
+#include <vector>
 
 namespace rsaa {
 
@@ -28,15 +41,142 @@ Scene load_scene(const std::string& spec) {
   return load_model(spec);
 }
 
+namespace {
+
+// What the loader thread hands back; shared, since a thread that times out outlives the call.
+struct LoadState {
+  std::string spec;
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+  std::optional<Scene> scene;
+  std::exception_ptr error;
+};
+
+// The last line of defence against nesting deeper than even the loader's large stack (a glTF
+// node chain of 1.5 million levels needs more than 512 MiB): a fault just below the loader
+// thread's stack ends the process with a message naming the scene, instead of a bare SIGSEGV.
+thread_local std::uintptr_t t_stack_low = 0;
+thread_local char t_overflow_message[640];
+thread_local std::size_t t_overflow_length = 0;
+struct sigaction g_previous_segv;
+
+void on_segv(int signal, siginfo_t* info, void* context) {
+  const auto address = reinterpret_cast<std::uintptr_t>(info->si_addr);
+  if (t_stack_low != 0 && address < t_stack_low + 65536 && address + (std::uintptr_t{1} << 20) > t_stack_low) {
+    [[maybe_unused]] const ssize_t n = ::write(2, t_overflow_message, t_overflow_length);
+    ::_exit(1);
+  }
+  // Not a loader overflow: hand the fault to whoever handled it before (by default, a crash).
+  ::sigaction(signal, &g_previous_segv, nullptr);
+  (void)context;
+}
+
+void guard_loader_stack(const std::string& spec, std::vector<char>& alternate_stack) {
+  static std::once_flag installed;
+  std::call_once(installed, [] {
+    struct sigaction action {};
+    action.sa_sigaction = on_segv;
+    action.sa_flags = SA_SIGINFO | SA_ONSTACK;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGSEGV, &action, &g_previous_segv);
+  });
+  stack_t alternate{};
+  alternate.ss_sp = alternate_stack.data();
+  alternate.ss_size = alternate_stack.size();
+  if (::sigaltstack(&alternate, nullptr) != 0) return;
+  pthread_attr_t attributes;
+  if (pthread_getattr_np(pthread_self(), &attributes) != 0) return;
+  void* low = nullptr;
+  std::size_t size = 0;
+  pthread_attr_getstack(&attributes, &low, &size);
+  pthread_attr_destroy(&attributes);
+  const std::string message = "rsaa: error: '" + spec.substr(0, 400) +
+                              "': nested too deeply: the model importer overflowed its " +
+                              std::to_string(size >> 20) + " MiB stack\n";
+  t_overflow_length = std::min(message.size(), sizeof t_overflow_message);
+  std::memcpy(t_overflow_message, message.data(), t_overflow_length);
+  t_stack_low = reinterpret_cast<std::uintptr_t>(low);
+}
+
+void* run_loader(void* argument) {
+  const std::shared_ptr<LoadState> state = *static_cast<std::shared_ptr<LoadState>*>(argument);
+  delete static_cast<std::shared_ptr<LoadState>*>(argument);
+  std::vector<char> alternate_stack(std::max<std::size_t>(SIGSTKSZ, 64 * 1024));
+  guard_loader_stack(state->spec, alternate_stack);
+  std::optional<Scene> scene;
+  std::exception_ptr error;
+  try {
+    scene = load_scene(state->spec);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  t_stack_low = 0;
+  stack_t off{};
+  off.ss_flags = SS_DISABLE;
+  ::sigaltstack(&off, nullptr);
+  const std::lock_guard<std::mutex> lock(state->mutex);
+  state->scene = std::move(scene);
+  state->error = error;
+  state->done = true;
+  state->finished.notify_all();
+  return nullptr;
+}
+
+}  // namespace
+
 Scene load_scene_within(const std::string& spec, double seconds) {
-  auto task = std::make_shared<std::packaged_task<Scene()>>([spec] { return load_scene(spec); });
-  std::future<Scene> result = task->get_future();
-  std::thread([task] { (*task)(); }).detach();
-  if (result.wait_for(std::chrono::duration<double>(seconds)) != std::future_status::ready)
+  auto state = std::make_shared<LoadState>();
+  state->spec = spec;
+  // pthread, not std::thread: only pthread attributes set the stack size. Under a tight
+  // address-space limit the full stack may not fit: smaller ones are tried (the fault guard
+  // still names the scene if one overflows).
+  auto* argument = new std::shared_ptr<LoadState>(state);
+  pthread_t thread;
+  int error = EAGAIN;
+  for (std::size_t stack = kLoaderStackBytes; error != 0 && stack >= (std::size_t{16} << 20); stack /= 4) {
+    pthread_attr_t attributes;
+    pthread_attr_init(&attributes);
+    pthread_attr_setstacksize(&attributes, stack);
+    error = pthread_create(&thread, &attributes, run_loader, argument);
+    pthread_attr_destroy(&attributes);
+  }
+  if (error != 0) {
+    delete argument;
+    throw std::runtime_error("'" + spec + "': cannot start the loader thread (" +
+                             std::strerror(error) + "; a process or memory limit?)");
+  }
+  pthread_detach(thread);
+  std::unique_lock<std::mutex> lock(state->mutex);
+  if (!state->finished.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return state->done; }))
     throw std::runtime_error("'" + spec + "': loading did not finish within " +
                              std::to_string(int(seconds)) + " s (a malformed file can make the "
                              "model importer loop forever)");
-  return result.get();
+  if (state->error) std::rethrow_exception(state->error);
+  return std::move(*state->scene);
+}
+
+void check_frameable(const Scene& scene, const std::string& what) {
+  const glm::dvec3 lo = scene.bounds_min(), hi = scene.bounds_max();
+  double largest = 0.0, extent = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    largest = std::max({largest, std::abs(lo[k]), std::abs(hi[k])});
+    extent = std::max(extent, hi[k] - lo[k]);
+  }
+  char text[160];
+  if (!(largest <= kMaxSceneCoordinate)) {
+    std::snprintf(text, sizeof text, "coordinates reach %g; models render correctly up to %g", largest,
+                  kMaxSceneCoordinate);
+  } else if (!(extent >= kMinSceneExtent)) {
+    std::snprintf(text, sizeof text, "extent %g is below %g, too small to render correctly in float", extent,
+                  kMinSceneExtent);
+  } else if (extent < largest * kMinExtentToPosition) {
+    std::snprintf(text, sizeof text, "extent %g at %g from the origin spans too few float steps (needs at least %g of the distance)",
+                  extent, largest, kMinExtentToPosition);
+  } else {
+    return;
+  }
+  throw std::runtime_error(what + ": " + text);
 }
 
 Scene scaled_scene(Scene scene, float factor) {

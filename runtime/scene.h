@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/scene_shading.h"
 #include "runtime/camera.h"
 
 namespace rsaa {
@@ -42,6 +43,9 @@ struct Scene {
   std::vector<TextureImage> textures;
   glm::vec3 background{0.05f, 0.06f, 0.09f};  // linear clear colour
   std::optional<Camera> camera;               // a built-in view; else frame the bounds
+  // Extra lights beside the fixed one (view space; none unless a caller adds them: the bench's
+  // --lights). Every technique shades with them where it shades (shaders/shading.glsl).
+  std::vector<PointLight> point_lights;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
   // Axis-aligned bounds of the vertices that triangles use.
@@ -51,6 +55,28 @@ struct Scene {
 
 const std::vector<std::string>& builtin_scene_names();
 
+// Budgets of model loading (docs/reliability.md): the model file and each file it refers to,
+// the vertices and faces copied out of the importer, and the texels of all its textures (each
+// texture also within kTextureBudget of core/image_io.h).
+constexpr std::uint64_t kMaxModelFileBytes = std::uint64_t{256} << 20;
+constexpr std::uint64_t kMaxSceneVertices = std::uint64_t{1} << 24;
+constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{1} << 25;
+constexpr std::uint64_t kMaxSceneTexels = std::uint64_t{1} << 26;
+// Coordinates a model may have and still render as it would at unit scale (measured with a
+// tetrahedron framed automatically: equal images from scale 1e-5 to 3e9; scale 1e-6 and 1e10
+// differ, 1e30 showed only the background; offset from the origin by 1e4 times its size it
+// is within 63 dB, by 3e4 times only 43 dB).
+constexpr double kMaxSceneCoordinate = 1e9;
+constexpr double kMinSceneExtent = 1e-5;
+constexpr double kMinExtentToPosition = 1e-4;
+// Throws std::runtime_error starting with `what` when the scene's bounds are outside these.
+void check_frameable(const Scene& scene, const std::string& what);
+
+// Stack of the loader thread: importers recurse per node level, 350 to 700 bytes each (measured:
+// a glTF node chain 800,000 deep loads, 1.5 million overflows); the main thread's 8 MiB
+// overflowed at 20,000. Deeper files are stopped by a fault guard that names the scene.
+constexpr std::size_t kLoaderStackBytes = std::size_t{512} << 20;
+
 // "builtin:NAME" or a model path. Throws std::runtime_error naming the scene on any problem:
 // unknown built-in, missing/unreadable file, no triangles, non-finite positions.
 Scene load_scene(const std::string& spec);
@@ -58,7 +84,8 @@ Scene load_scene(const std::string& spec);
 // load_scene with a time limit: some broken files make assimp 5.2 loop forever (a PLY header
 // cut inside a property list does). The loader runs on its own thread; past the limit this
 // throws std::runtime_error naming the file, and the stuck thread is left behind, so the caller
-// should end the process soon (the command line does).
+// should end the process soon (the command line does). The thread has a kLoaderStackBytes
+// stack; when no thread can be started (a process limit), this throws naming the scene.
 Scene load_scene_within(const std::string& spec, double seconds);
 
 Scene builtin_scene(const std::string& name);

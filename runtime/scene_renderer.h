@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "runtime/fullscreen.h"
 #include "runtime/gl_objects.h"
 #include "runtime/gpu_scene.h"
 
@@ -27,9 +28,5 @@ class SceneRenderer {
 
 // Clears a framebuffer's colour attachment 0 to the scene background and its depth to 1.
 void clear_to_background(GLuint framebuffer, const GpuScene& scene);
-
-// A fullscreen-triangle program from fullscreen.vert and the given fragment shader.
-gl::Program make_fullscreen_program(const std::string& fragment_name, const std::string& defines);
-void draw_fullscreen_triangle();
 
 }  // namespace rsaa

@@ -47,4 +47,13 @@ std::string table_glsl(const std::string& pattern) {
   return it->second;
 }
 
+OffsetTable builtin_offset_table(const std::string& pattern) {
+  const auto& sources = embedded_shader_sources();
+  const auto it = sources.find("tables/" + pattern + ".json");
+  if (it == sources.end())
+    throw std::runtime_error("no baked offset table for pattern '" + pattern +
+                             "' in this build (tables/" + pattern + ".json)");
+  return parse_offset_table(it->second, "tables/" + pattern + ".json");
+}
+
 }  // namespace rsaa::gl

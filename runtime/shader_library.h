@@ -5,6 +5,8 @@
 #include <map>
 #include <string>
 
+#include "core/offset_table.h"
+
 namespace rsaa::gl {
 
 // Name -> text: "rsaa_common.glsl", "scene.vert", ..., "tables/d3d8x.glsl".
@@ -16,5 +18,7 @@ std::string shader_source(const std::string& name);
 
 // The baked offset table of a pattern (tables/P.glsl); throws naming the pattern if absent.
 std::string table_glsl(const std::string& pattern);
+// The same table as data (tables/P.json), parsed and validated.
+OffsetTable builtin_offset_table(const std::string& pattern);
 
 }  // namespace rsaa::gl

@@ -34,6 +34,10 @@ std::vector<TechniqueOptions> rsaa_variants() {
   return list;
 }
 
+std::vector<TechniqueOptions> rsaa_defaults() {
+  return {technique_options("rsaa", 4), technique_options("rsaa", 8)};
+}
+
 const std::vector<std::string>& technique_names() {
   static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa", "dcaa", "dyncov", "agaa"};
   return names;
@@ -71,8 +75,8 @@ void validate(const TechniqueOptions& o) {
   } else if (o.technique == "rsaa") {
     const int n = samples_or(o, 8);
     if (n != 4 && n != 8) bad("rsaa --samples must be 4 or 8, not " + std::to_string(n));
-    if (o.similarity != "sadp" && o.similarity != "depth")
-      bad("rsaa --similarity must be sadp or depth, not '" + o.similarity + "'");
+    if (o.similarity != "sadp" && o.similarity != "depth" && o.similarity != "sadp-plane")
+      bad("rsaa --similarity must be sadp, depth or sadp-plane, not '" + o.similarity + "'");
     if (o.auth < 0 || o.auth > 2) bad("rsaa --auth must be 0, 1 or 2");
     if (!o.pattern.empty()) {
       if (n == 8 && o.pattern != "d3d8x") bad("rsaa --samples 8 uses --pattern d3d8x");
@@ -134,14 +138,18 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
     return make_jittered_supersampling(stratified_positions(samples_or(o, 64) == 64 ? 8 : 4, 64),
                                        width, height);
   }
+  return make_rsaa(rsaa_settings(o), width, height);
+}
+
+RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   RsaaSettings s;
   const int n = samples_or(o, 8);
   s.pattern = n == 8 ? "d3d8x" : o.pattern.empty() ? "gl4x" : o.pattern;
-  s.depth_similarity = o.similarity == "depth";
+  s.similarity = o.similarity;
   s.auth = o.auth;
   s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;
   s.code_bits = o.code_bits;
-  return make_rsaa(s, width, height);
+  return s;
 }
 
 }  // namespace rsaa

@@ -1,5 +1,5 @@
 // Every anti-aliasing technique is a render pass behind this one interface (Falcor-style),
-// chosen by name (DESIGN.md section 4): noaa, msaa, ssaa, rsaa, ...
+// chosen by name (docs/conventions.md section 4): noaa, msaa, ssaa, rsaa, ...
 #pragma once
 
 #include <memory>
@@ -14,7 +14,7 @@ namespace rsaa {
 struct TechniqueOptions {
   std::string technique = "noaa";
   int samples = 0;                   // 0: the technique's default
-  std::string similarity = "sadp";   // rsaa: sadp | depth
+  std::string similarity = "sadp-plane";  // rsaa: sadp-plane (default) | sadp | depth (the paper's)
   int auth = 0;                      // rsaa: 0 none, 1 post-pass, 2 pre-pass
   double threshold = -1.0;           // rsaa: < 0 = default (0.4 SADP, 0.4 % depth)
   std::string pattern;               // rsaa 4x: gl4x (default) | d3d4x
@@ -35,6 +35,8 @@ TechniqueOptions technique_options(const std::string& technique, int samples = 0
 
 // The paper's 12 RSAA variants: samples 4 | 8 x similarity sadp | depth x auth 0 | 1 | 2.
 std::vector<TechniqueOptions> rsaa_variants();
+// RSAA 4x and 8x with this project's default options (sadp-plane, auth 0).
+std::vector<TechniqueOptions> rsaa_defaults();
 
 // Throws std::invalid_argument naming the bad option (unknown technique, unsupported sample
 // count, auth outside 0..2, ...).

@@ -54,9 +54,36 @@ float rsaa_depth_difference(vec3 p1, vec3 p2) {
   return 100.0 * abs(z1 - z2) / max(min(z1, z2), 1e-20);
 }
 
+// Gap between the two surfaces along the view ray, in percent of the depth: the distance from
+// one point to the other's plane, measured along that point's view ray (camera at the view-space
+// origin: a perspective projection), divided by its distance from the camera. The plane used is
+// the one the ray meets least obliquely; when both are nearly edge-on (|n . ray| < 0.05) the gap
+// is unknown and 0 is returned. Unlike SADP it does not vanish when both surfaces are seen at a
+// grazing angle (a silhouette over a floor), and unlike the raw depth difference it is 0 for two
+// points of one plane however steeply that plane recedes.
+float rsaa_plane_gap(vec3 p1, vec3 n1, vec3 p2, vec3 n2) {
+  float d1 = length(p1), d2 = length(p2);
+  if (!(d1 > 1e-30 && d2 > 1e-30)) return 0.0;
+  float c1 = abs(dot(n1, p2)) / d2;  // plane 1 seen along the ray through p2
+  float c2 = abs(dot(n2, p1)) / d1;
+  if (!(max(c1, c2) >= 0.05)) return 0.0;
+  vec3 r = p2 - p1;
+  return c1 >= c2 ? 100.0 * abs(dot(n1, r)) / (c1 * d2) : 100.0 * abs(dot(n2, r)) / (c2 * d1);
+}
+
+// Plane gap (percent) that counts as a different surface with RSAA_SIMILARITY_SADP_PLANE.
+#ifndef RSAA_PLANE_GAP_PERCENT
+#define RSAA_PLANE_GAP_PERCENT 1.0
+#endif
+
 float rsaa_similarity(vec3 p1, vec3 n1, vec3 p2, vec3 n2) {
-#ifdef RSAA_SIMILARITY_DEPTH
+#if defined(RSAA_SIMILARITY_DEPTH)
   return rsaa_depth_difference(p1, p2);
+#elif defined(RSAA_SIMILARITY_SADP_PLANE)
+  // SADP or the plane gap, whichever says "more different", in SADP units: a gap of
+  // RSAA_PLANE_GAP_PERCENT maps to the paper's threshold 0.4; capped at SADP's maximum, 2.
+  float gap = rsaa_plane_gap(p1, n1, p2, n2) * (0.4 / RSAA_PLANE_GAP_PERCENT);
+  return max(rsaa_sadp(p1 - p2, n1, n2), min(gap, 2.0));
 #else
   return rsaa_sadp(p1 - p2, n1, n2);
 #endif
@@ -75,11 +102,24 @@ const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
 const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
 #endif
 
+// What a code stores. SADP lies in [0, 2] and is stored as it is. Depth differences are percent
+// of depth and unbounded: stored linearly they would saturate at 2% (8 and 16 bits), every larger
+// difference would tie and the k-means split would degenerate into a fixed cut. They are stored
+// as log2(1 + v / 0.05%) / 8 instead: about 4% relative resolution at 8 bits near the 0.4%
+// threshold, distinct codes up to about 3000%.
+#ifdef RSAA_SIMILARITY_DEPTH
+float rsaa_code_value(float similarity) { return log2(1.0 + similarity / 0.05) / 8.0; }
+float rsaa_similarity_of_code_value(float stored) { return 0.05 * (exp2(8.0 * stored) - 1.0); }
+#else
+float rsaa_code_value(float similarity) { return similarity; }
+float rsaa_similarity_of_code_value(float stored) { return stored; }
+#endif
+
 // A NaN similarity (broken normals or positions) encodes as "same surface": the pixel is left
 // alone rather than resampled from a guess.
 uint rsaa_encode_similarity(float value) {
   if (isnan(value)) return 1u;
-  float scaled = clamp(value, 0.0, 4.0e9) * RSAA_CODE_SCALE;
+  float scaled = rsaa_code_value(clamp(value, 0.0, 4.0e9)) * RSAA_CODE_SCALE;
   return scaled >= float(RSAA_CODE_MAX - 1u) ? RSAA_CODE_MAX : uint(scaled) + 1u;
 }
 
@@ -87,7 +127,7 @@ uint rsaa_encode_similarity(float value) {
 // different from a surface centre.
 float rsaa_decode_similarity(uint code, bool centre_is_surface) {
   if (code == 0u) return centre_is_surface ? 1.0e9 : 0.0;
-  return float(code - 1u) / RSAA_CODE_SCALE;
+  return rsaa_similarity_of_code_value(float(code - 1u) / RSAA_CODE_SCALE);
 }
 
 #ifdef RSAA_SAMPLE_COUNT

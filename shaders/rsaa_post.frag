@@ -10,25 +10,15 @@ uniform mat4 u_inverse_projection;
 uniform vec2 u_viewport;
 uniform float u_threshold;
 uniform ivec2 u_neighbours[RSAA_SAMPLE_COUNT];  // nearest outside pixel per subsample
+#if RSAA_AUTH == 1
+// Per mask: the representative dissimilar subsample (core's representative_dissimilar()).
+uniform int u_representative[1 << RSAA_SAMPLE_COUNT];
+#endif
 
 layout(location = 0) out vec4 o_colour;
 #ifdef RSAA_OUTPUT_MASK
 layout(location = 1) out uint o_mask;
 #endif
-
-// The dissimilar subsample farthest from the centre: the representative of its cluster.
-int farthest_dissimilar(uint mask) {
-  int best = 0;
-  float best_distance = -1.0;
-  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    float d = length(rsaa_sample_positions[i]);
-    if ((mask & (1u << i)) == 0u && d > best_distance) {
-      best = i;
-      best_distance = d;
-    }
-  }
-  return best;
-}
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -46,7 +36,7 @@ void main() {
     // Post-pass authentication (paper section 2.4): if the outside pixel nearest to the
     // representative dissimilar subsample differs from the centre much more than that subsample
     // does, the fetch would blend in a surface the pixel does not show: halve the offset.
-    int fs = farthest_dissimilar(mask);
+    int fs = u_representative[mask];
     ivec2 outside = clamp(pixel + u_neighbours[fs], ivec2(0), ivec2(u_viewport) - 1);
     uvec2 outside_normal = texelFetch(u_centre_normal, outside, 0).xy;
     if (centre_is_surface && rsaa_is_surface(outside_normal)) {

@@ -9,6 +9,12 @@
 #include "runtime/gl_context.h"
 #include "tests/test_util.h"
 #include "tools/bench/bench.h"
+#include "tools/bench/copy_pass.h"
+#include "tools/bench/growth.h"
+#include "runtime/render.h"
+#include "runtime/scene.h"
+#include "core/image_metrics.h"
+#include "core/scene_shading.h"
 
 namespace rsaa {
 namespace {
@@ -54,6 +60,7 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
     EXPECT_GT(r.flicker_psnr_db, 0.0) << r.label;
     EXPECT_GT(r.bytes_per_pixel, 0.0) << r.label;
     EXPECT_FALSE(r.pass_medians.empty()) << r.label;
+    EXPECT_GT(r.copy_ms, 0.0) << r.label;
   }
   EXPECT_GT(results[4].psnr_db, results[0].psnr_db);  // ssaa 16x beats no AA
   EXPECT_GT(std::filesystem::file_size(crops.file("crops-edges.png")), 1000u);
@@ -64,6 +71,9 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   for (const char* key : {"scene", "technique", "passes", "frame_ms", "frame_ratio_to_noaa", "psnr_db", "ssim",
                           "luma_error_share_percent", "orbit_psnr_db", "flicker_psnr_db", "bytes_per_pixel", "pareto"})
     EXPECT_TRUE(json["results"][0].contains(key)) << key;
+  for (const auto& pass : json["results"][1].at("passes"))
+    EXPECT_DOUBLE_EQ(pass.at("copy_multiple").get<double>(),
+                     pass.at("wall_ms").get<double>() / results[1].copy_ms);
   std::istringstream csv(bench::results_csv(results));
   std::string line;
   int lines = 0;
@@ -82,12 +92,123 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   const std::string report = bench::results_markdown(o, results);
   EXPECT_NE(report.find("| edges | * noaa |"), std::string::npos) << report;
   EXPECT_NE(report.find("RSAA 8x - 4x"), std::string::npos);
+  EXPECT_NE(report.find("| edges | fxaa | "), std::string::npos) << report;  // the per-pass table
   test::write_text(dir.file("broken.json"), "{\"format\": \"rsaa-bench\"}");
   EXPECT_THROW(bench::read_results_json(dir.file("broken.json"), read_options), std::runtime_error);
   bench::plot_pareto(results, results[0].scene, dir.file("pareto.png"));
   bench::plot_pass_times(results, results[0].scene, dir.file("passes.png"));
   EXPECT_GT(std::filesystem::file_size(dir.file("pareto.png")), 1000u);
   EXPECT_GT(std::filesystem::file_size(dir.file("passes.png")), 1000u);
+}
+
+TEST(Bench, CopyPassCopiesTheFrame) {
+  // The speed of light is only honest if the pass really reads and writes every pixel.
+  gl::HeadlessContext context;
+  const int w = 5, h = 3;
+  std::vector<float> texels;
+  for (int i = 0; i < w * h; ++i) texels.insert(texels.end(), {(i % w) / 4.0f, (i / w) / 2.0f, 0.25f, 1.0f});
+  const gl::Texture source = gl::make_texture_2d(GL_RGBA16F, w, h);
+  glTextureSubImage2D(source.get(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, texels.data());
+  bench::CopyPass copy(w, h);
+  EXPECT_GE(copy.time_ms(source.get()), 0.0);
+  std::vector<float> out(texels.size());
+  glGetTextureImage(copy.target(), 0, GL_RGBA, GL_FLOAT, GLsizei(out.size() * sizeof(float)), out.data());
+  for (std::size_t i = 0; i < out.size(); ++i) EXPECT_NEAR(out[i], texels[i], 0.51 / 255.0) << i;  // 8-bit rounding
+}
+
+TEST(BenchGrowth, SubdividingChangesTheTriangleCountNotTheImage) {
+  gl::HeadlessContext context;
+  const Scene scene = load_scene("builtin:default");
+  const Scene split = bench::subdivide(scene, 2);
+  EXPECT_EQ(split.triangle_count(), 16 * scene.triangle_count());
+  EXPECT_EQ(split.draws.size(), scene.draws.size());
+  const Camera camera = choose_camera(scene, std::nullopt);
+  const auto render = [&](const Scene& s) {
+    const GpuScene gpu(s);
+    return to_display(render_frame(gpu, camera, technique_options("noaa"), 160, 120));
+  };
+  // Only rasterisation of the new inner edges and float rounding may differ.
+  EXPECT_GT(compare_images(render(split), render(scene)).psnr_db, 40.0);
+}
+
+TEST(BenchGrowth, SlopesOfKnownPoints) {
+  bench::GrowthResults r;
+  for (int side : {100, 200, 400}) {  // frame ms = 2 + 3 ms per megapixel; and proportional to triangles
+    bench::GrowthPoint p;
+    p.label = "t";
+    p.width = side, p.height = side;
+    p.frame_ms = 2.0 + 3.0 * side * side / 1e6;
+    r.points.push_back(p);
+    p.axis = bench::GrowthAxis::Triangles;
+    p.triangles = std::size_t(side) * 1000;
+    p.frame_ms = 0.5 * side;
+    r.points.push_back(p);
+  }
+  const auto slopes = bench::growth_slopes(r);
+  ASSERT_EQ(slopes.size(), 2u);
+  EXPECT_EQ(slopes[0].axis, bench::GrowthAxis::Pixels);
+  EXPECT_NEAR(slopes[0].ms_per_unit, 3.0, 1e-9);
+  EXPECT_LT(slopes[0].exponent, 1.0);  // the constant 2 ms makes it sub-linear
+  EXPECT_NEAR(slopes[1].exponent, 1.0, 1e-9);
+  EXPECT_NEAR(slopes[1].ms_per_unit, 0.5 * 100, 1e-9);  // per 100k triangles
+}
+
+TEST(BenchGrowth, TinyRunWritesEveryPoint) {
+  gl::HeadlessContext context;
+  bench::GrowthOptions o;
+  o.scene = "builtin:edges";
+  o.techniques = {technique_options("noaa"), technique_options("rsaa", 8)};
+  o.sizes = {{32, 24}, {64, 48}};
+  o.subdivision_levels = {0, 1};
+  o.width = 32, o.height = 24, o.frames = 1;
+  const auto r = bench::run_growth(o, nullptr);
+  ASSERT_EQ(r.points.size(), 8u);
+  EXPECT_EQ(r.points[5].triangles, r.base_triangles);
+  EXPECT_EQ(r.points[7].triangles, 4 * r.base_triangles);
+  for (const auto& p : r.points) EXPECT_GT(p.frame_ms, 0.0) << p.label;
+  const auto json = nlohmann::json::parse(bench::growth_json(o, r));
+  EXPECT_EQ(json.at("points").size(), 8u);
+  EXPECT_EQ(json.at("slopes").size(), 4u);
+  const std::string md = bench::growth_markdown(o, r);
+  EXPECT_NE(md.find("| " + technique_label(o.techniques[1]) + " |"), std::string::npos) << md;
+  test::TempDir dir;
+  bench::plot_growth(r, bench::GrowthAxis::Pixels, dir.file("pixels.png"));
+  bench::plot_growth(r, bench::GrowthAxis::Triangles, dir.file("triangles.png"));
+  EXPECT_GT(std::filesystem::file_size(dir.file("pixels.png")), 1000u);
+  EXPECT_GT(std::filesystem::file_size(dir.file("triangles.png")), 1000u);
+}
+
+TEST(BenchLights, PointLightsShadeAsTheCpuTwin) {
+  // A grey square facing the camera; the centre pixel sees its centre, view position (0, 0, -5).
+  gl::HeadlessContext context;
+  Scene scene;
+  scene.name = "square";
+  for (const auto& [x, y] : std::vector<std::pair<float, float>>{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+    SceneVertex v;
+    v.position = {x, y, 0.0f};
+    v.normal = {0.0f, 0.0f, 1.0f};
+    v.albedo = glm::vec3(0.5f);
+    scene.vertices.push_back(v);
+  }
+  scene.indices = {0, 1, 2, 0, 2, 3};
+  scene.draws = {{0, 6, -1}};
+  Camera camera;  // at (0, 0, 5), looking at the origin
+  scene.camera = camera;
+  const Scene lit = bench::with_lights(scene, camera, 4);
+  ASSERT_EQ(lit.point_lights.size(), 3u);
+  const auto centre = [&](const Scene& s) {
+    const GpuScene gpu(s);
+    return render_frame(gpu, camera, technique_options("noaa"), 33, 33).at(16, 16);
+  };
+  const Rgb one = centre(scene), four = centre(lit);
+  const Rgb cpu_one = shade_surface({0.5f, 0.5f, 0.5f}, {0, 0, 1}, {0, 0, -5}, kSceneSpecularExponent,
+                                    kSceneSpecularScale);
+  const Rgb cpu_four = shade_surface({0.5f, 0.5f, 0.5f}, {0, 0, 1}, {0, 0, -5}, kSceneSpecularExponent,
+                                     kSceneSpecularScale, 1.0f, lit.point_lights);
+  EXPECT_GT(cpu_four.r, cpu_one.r + 0.05f);  // the point lights reach the square
+  for (const auto& [gl_value, cpu_value] : {std::pair{one.r, cpu_one.r}, {one.b, cpu_one.b}, {four.r, cpu_four.r},
+                                            {four.g, cpu_four.g}, {four.b, cpu_four.b}})
+    EXPECT_NEAR(gl_value, cpu_value, 2e-3 * (1.0f + cpu_value));  // RGBA16F
 }
 
 TEST(Bench, CropsShowTheRegionWhereTheFirstImageIsWrong) {

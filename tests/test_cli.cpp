@@ -62,9 +62,10 @@ TEST(Cli, TrainRejectsBadOptionsWithoutWritingAnything) {
     EXPECT_NE(r.output.find(bad.message), std::string::npos) << bad.args << "\n" << r.output;
   }
   EXPECT_EQ(file_count(dir.path()), 0u);
-  const auto r = run_rsaa("train --pattern d3d4x --cases 10 --out-dir /nonexistent");
+  // A missing --out-dir is created; one that cannot be is refused, named.
+  const auto r = run_rsaa("train --pattern d3d4x --cases 10 --out-dir /dev/null/dir");
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("/nonexistent"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("/dev/null/dir"), std::string::npos) << r.output;
 }
 
 TEST(Cli, TrainAcceptsPositions) {

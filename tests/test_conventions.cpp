@@ -1,4 +1,4 @@
-// The conventions of core/conventions.h and DESIGN.md section 1, checked once here.
+// The conventions of core/conventions.h and docs/conventions.md section 1, checked once here.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,9 +67,6 @@ TEST(Conventions, PatternFromPositionsRejectsBadPositions) {
   EXPECT_NO_THROW(pattern_from_positions("custom-x", {{0.5, -0.5}}));
 }
 
-}  // namespace
-}  // namespace rsaa
-
 namespace rsaa {
 namespace {
 
@@ -83,6 +80,27 @@ TEST(Conventions, OutsidePixelTowardsSubsampleMatchesThePapersTableForD3D8x) {
     EXPECT_EQ(step.j, expected[s][1]) << "subsample " << s;
   }
   EXPECT_EQ(outside_pixel_towards({0, 0}).i, 1);
+}
+
+}  // namespace
+}  // namespace rsaa
+
+// Post-pass authentication picks the farthest dissimilar subsample; among equally distant ones
+// the last in pattern order, as the paper's Listing 3 (which keeps the last dissimilar one).
+TEST(Conventions, RepresentativeDissimilarBreaksTiesAsListing3) {
+  const SamplePattern d3d8x = builtin_pattern("d3d8x");
+  // Subsamples 4 (-5,5) and 5 (-7,-1) are both sqrt(50)/16 from the centre; 6 and 7 are farther.
+  const Mask only_4_and_5_dissimilar = full_mask(8) & ~Mask{0x30};
+  EXPECT_EQ(representative_dissimilar(d3d8x, only_4_and_5_dissimilar), 5);
+  EXPECT_EQ(representative_dissimilar(d3d8x, full_mask(8) & ~Mask{0x10}), 4);
+  EXPECT_EQ(representative_dissimilar(d3d8x, Mask{0}), 7);  // the farthest, (7,-7)
+  EXPECT_EQ(representative_dissimilar(d3d8x, full_mask(8)), -1);
+  // d3d4x: all four subsamples equally distant, so the last dissimilar one wins.
+  const SamplePattern d3d4x = builtin_pattern("d3d4x");
+  EXPECT_EQ(representative_dissimilar(d3d4x, Mask{0b0000}), 3);
+  EXPECT_EQ(representative_dissimilar(d3d4x, Mask{0b1000}), 2);
+  EXPECT_EQ(representative_dissimilar(d3d4x, Mask{0b1010}), 2);
+  EXPECT_EQ(representative_dissimilar(d3d4x, Mask{0b1110}), 0);
 }
 
 }  // namespace

@@ -19,12 +19,13 @@ struct ProbeCase {
 };
 
 struct ProbeResult {
-  float sadp, depth_difference, decoded, unused;
+  float sadp, depth_difference, decoded, plane_gap;
   std::uint32_t code, code_of_zero, pad[2];
 };
 
 // Evaluates the shared functions for each case with the given code bits.
-std::vector<ProbeResult> probe(const std::vector<ProbeCase>& cases, int code_bits) {
+std::vector<ProbeResult> probe(const std::vector<ProbeCase>& cases, int code_bits,
+                               const std::string& defines = "") {
   const std::string source = gl::shader_source("rsaa_common.glsl") + R"(
 layout(local_size_x = 1) in;
 struct Case { vec4 p1; vec4 n1; vec4 p2; vec4 n2; };
@@ -37,11 +38,12 @@ void main() {
   uint code = rsaa_encode_similarity(c.p1.w);
   results[i].values = vec4(rsaa_sadp(c.p1.xyz - c.p2.xyz, c.n1.xyz, c.n2.xyz),
                            rsaa_depth_difference(c.p1.xyz, c.p2.xyz),
-                           rsaa_decode_similarity(code, true), 0.0);
+                           rsaa_decode_similarity(code, true),
+                           rsaa_plane_gap(c.p1.xyz, c.n1.xyz, c.p2.xyz, c.n2.xyz));
   results[i].codes = uvec4(code, rsaa_encode_similarity(0.0), 0u, 0u);
 })";
   const gl::Program program = gl::make_program(
-      {{GL_COMPUTE_SHADER, source}}, "#define RSAA_CODE_BITS " + std::to_string(code_bits) + "\n",
+      {{GL_COMPUTE_SHADER, source}}, "#define RSAA_CODE_BITS " + std::to_string(code_bits) + "\n" + defines,
       "GLSL probe");
   GLuint buffers[2];
   glCreateBuffers(2, buffers);
@@ -202,6 +204,39 @@ TEST_F(GlslExtremes, ClassificationAndItsThresholdLimits) {
   EXPECT_EQ(m[3], 255u);
   EXPECT_EQ(m[4], 255u);
   EXPECT_EQ(m[5], 0u);
+}
+
+// Depth codes keep large relative depth differences apart (stored on a log scale), so the
+// k-means split stays adaptive: linear codes saturated at 2% (8 and 16 bits).
+TEST_F(GlslExtremes, DepthCodesStayDistinctAboveTwoPercent) {
+  const std::vector<float> percents = {0.1f, 0.4f, 1.0f, 2.0f, 3.0f, 5.0f, 10.0f, 20.0f, 50.0f, 100.0f, 500.0f};
+  for (int bits : {8, 16, 32}) {
+    std::vector<ProbeCase> cases;
+    for (float v : percents) cases.push_back(make_case({0, 0, -1}, kZ, {0, 0, -1}, kZ, v));
+    const auto r = probe(cases, bits, "#define RSAA_SIMILARITY_DEPTH\n");
+    for (std::size_t i = 0; i < percents.size(); ++i) {
+      if (i > 0) EXPECT_GT(r[i].code, r[i - 1].code) << bits << " bits, " << percents[i] << "%";
+      // Decoded within the code's resolution: 1/16 of an octave of (1 + v / 0.05%) at 8 bits.
+      EXPECT_NEAR(r[i].decoded, percents[i], 0.05f * (percents[i] + 0.05f)) << bits << " bits";
+    }
+  }
+}
+
+// The plane gap: 0 for two points of one plane however obliquely it is seen; for parallel planes
+// the gap along the view ray in percent of the depth; 0 (unknown) when both planes are edge-on.
+TEST_F(GlslExtremes, PlaneGapClosedForms) {
+  const std::array<float, 3> up = {0, 1, 0};
+  const std::vector<ProbeCase> cases = {
+      make_case({0, -1, -10}, up, {0.3f, -1, -30}, up),  // one floor plane (about 6 degrees): 0
+      // Two parallel floors met by one ray, at 10 and 9 units: the second point lies 1 unit
+      // beyond the first floor along the ray, 1/9 = 11.1% of its own depth.
+      make_case({0, -1, -10}, up, {0, -0.9f, -9}, up),
+      make_case({0, 0, -10}, kX, {0, 0, -12}, kX),  // both planes edge-on to the ray: unknown
+  };
+  const auto r = probe(cases, 8);
+  EXPECT_NEAR(r[0].plane_gap, 0.0f, 1e-4f);
+  EXPECT_NEAR(r[1].plane_gap, 100.0f / 9.0f, 1e-3f);
+  EXPECT_EQ(r[2].plane_gap, 0.0f);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Line-case geometry: exact coverage against closed forms, dense sampling, and the independent
-// reference cases of ../shared/testdata (DESIGN.md section 2).
+// reference cases of tests/data (docs/conventions.md section 2).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,9 +108,9 @@ TEST(Bilinear, EstimateAtGridPointsAndKnownValue) {
   EXPECT_EQ(Neighbourhood3x3::from_binary_code(0b100010001).binary_code(), 0b100010001);
 }
 
-// ../shared/testdata/line_cases_d3d8x.csv, computed independently of this project.
+// tests/data/line_cases_d3d8x.csv, computed independently of this project (tests/data/README.md).
 TEST(ReferenceCases, ReproduceMasksColoursCoverageAndEstimates) {
-  const std::string path = std::string(RSAA_SHARED_DIR) + "/testdata/line_cases_d3d8x.csv";
+  const std::string path = std::string(RSAA_SOURCE_DIR) + "/tests/data/line_cases_d3d8x.csv";
   std::ifstream in(path);
   ASSERT_TRUE(in) << "missing reference data " << path;
   const SamplePattern pattern = builtin_pattern("d3d8x");

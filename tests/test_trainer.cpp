@@ -1,6 +1,7 @@
 // The trainer end to end: determinism, the masks one line can make, table structure, options.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -33,6 +34,57 @@ TEST(Trainer, SameSeedGivesIdenticalFilesWhateverTheThreadCount) {
   EXPECT_EQ(offset_table_hlsl(one), offset_table_hlsl(two));
   o.seed = 2;
   EXPECT_NE(offset_table_json(train_offset_table(o).table), offset_table_json(one));
+}
+
+// The streaming path against the way the trainer worked before it: all cases in memory, sorted
+// by (mask, line count, neighbourhood, index), summed in that order.
+TEST(Trainer, MergingCasesAsTheyArriveEqualsSortingThemAllToTheBit) {
+  const SamplePattern p = builtin_pattern("d3d16x");
+  const std::vector<CaseRecord> cases = generate_cases(p, 50001, 9);
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
+  for (std::size_t i = 0; i < cases.size(); ++i)
+    keyed.push_back({(cases[i].mask << 10) | (std::uint64_t(cases[i].line_count - 1) << 9) |
+                         cases[i].neighbourhood, i});
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<MaskCases::Group> expected;
+  for (std::size_t i = 0; i < keyed.size(); ++i) {
+    const CaseRecord& c = cases[keyed[i].second];
+    if (i == 0 || keyed[i].first != keyed[i - 1].first)
+      expected.push_back({c.line_count, c.neighbourhood, 0, 0.0, 0.0});
+    ++expected.back().count;
+    expected.back().coverage_sum += c.coverage;
+  }
+  for (int threads : {1, 3})
+    for (std::uint64_t block : {std::uint64_t{1000}, std::uint64_t{1} << 20}) {
+      CaseGroups groups;
+      for_each_case_block(p, cases.size(), 9, threads, block, [&](const std::vector<CaseRecord>& b) {
+        for (const CaseRecord& c : b) groups.add(c);
+      });
+      std::vector<MaskCases::Group> got;
+      for (const MaskCases& m : groups.by_mask())
+        for (const MaskCases::Group& g : m.groups) got.push_back(g);
+      ASSERT_EQ(got.size(), expected.size());
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        EXPECT_EQ(got[i].line_count, expected[i].line_count);
+        EXPECT_EQ(got[i].neighbourhood, expected[i].neighbourhood);
+        EXPECT_EQ(got[i].count, expected[i].count);
+        EXPECT_EQ(got[i].coverage_sum, expected[i].coverage_sum) << "group " << i;  // bits, not near
+      }
+    }
+}
+
+TEST(Trainer, TrainingErrorFromMergedCasesEqualsTheCaseByCaseRms) {
+  const TrainOptions o = options_for("d3d8x", 60000);
+  const TrainReport r = train_offset_table(o);
+  const TableAccuracy a = evaluate_table(r.table, generate_cases(o.pattern, o.cases, o.seed));
+  for (int k = 0; k < kCaseKindCount; ++k) {
+    EXPECT_EQ(r.training_error.table[k].count, a.table[k].count);
+    EXPECT_NEAR(r.training_error.table[k].rms, a.table[k].rms, 1e-12) << to_string(CaseKind(k));
+    for (int s = 0; s < kOffsetSourceCount; ++s) {
+      EXPECT_EQ(r.training_error.by_source[s][k].count, a.by_source[s][k].count);
+      EXPECT_NEAR(r.training_error.by_source[s][k].rms, a.by_source[s][k].rms, 1e-12);
+    }
+  }
 }
 
 // Every mask one line can make: lines just beside each line through two of the points
@@ -105,7 +157,9 @@ TEST(Trainer, RejectsBadOptions) {
   o.two_line_weight = std::nan("");
   EXPECT_THROW(train_offset_table(o), std::invalid_argument);
   o.two_line_weight = 0.5;
-  o.pattern = pattern_from_positions("custom-17", std::vector<Vec2>(17));
+  std::vector<Vec2> seventeen;
+  for (int i = 0; i < 17; ++i) seventeen.push_back({-0.4 + 0.05 * i, 0.03 * (i % 5)});
+  o.pattern = pattern_from_positions("custom-17", seventeen);  // more samples than a table takes
   EXPECT_THROW(train_offset_table(o), std::invalid_argument);
 }
 

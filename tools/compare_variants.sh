@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the references and all 12 RSAA variants of a scene and compares each with 64x SSAA
+# Renders the references, all 12 RSAA variants of the paper and RSAA's default (sadp-plane) of a scene and compares each with 64x SSAA
 # (rsaa compare). Prints a Markdown table and keeps the images in OUT_DIR.
 # Usage: tools/compare_variants.sh [SCENE] [WIDTH] [HEIGHT] [OUT_DIR]
 set -euo pipefail
@@ -22,6 +22,7 @@ for samples in 4 8; do
       techniques+=("rsaa --samples $samples --similarity $similarity --auth $auth")
     done
   done
+  techniques+=("rsaa --samples $samples --similarity sadp-plane --auth 0")  # the default
 done
 
 file_of() { echo "$out/$(echo "$1" | sed 's/--samples /x/; s/--similarity //; s/--auth /auth/; s/ //g').png"; }

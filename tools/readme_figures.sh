@@ -14,7 +14,7 @@ if [[ ${1:-} == -h || ${1:-} == --help ]]; then sed -n 2,8p "$0" | sed 's/^# \{0
 default_out=out/figures
 [[ $quick == 1 ]] && default_out=out/figures-quick
 out=${1:-$default_out}
-mkdir -p "$out"
+mkdir -p "$out" "$out/diagnosis"
 rsaa=./build/rsaa
 [[ -x $rsaa ]] || bash tools/build.sh
 engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
@@ -31,6 +31,9 @@ if [[ $quick == 1 ]]; then
   bash tools/bench_train.sh d3d8x 100000 1 >"$out/train-speed.md"
   step "compare variants, default scene at 160x120" compare-default.md
   bash tools/compare_variants.sh builtin:default 160 120 "$out/compare/default" >"$out/compare-default.md"
+  step "diagnosis, edges at 160x120" diagnosis.md
+  $rsaa diagnose --scene builtin:edges --width 160 --height 120 --surface-samples 4 --out-dir "$out/diagnosis" \
+    >"$out/diagnosis.md"
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   echo "quick figures done in $((SECONDS - started)) s; docs/ untouched" >&2
@@ -53,8 +56,17 @@ for scene in builtin:default "$engine" "$truck"; do
   step "compare variants, $name" "compare-$name.md"
   bash tools/compare_variants.sh "$scene" 640 480 "$out/compare/$name" >"$out/compare-$name.md"
 done
-cp "$out/compare/default/rsaax8sadpauth0.png" docs/images/default_rsaa.png
+cp "$out/compare/default/rsaax8sadp-planeauth0.png" docs/images/default_rsaa.png
 bash tools/crops.sh "$out/compare/default" 100x75+250+40 docs/images/default_crops_star.png
+for scene in builtin:default "$engine" builtin:grazing; do
+  name=$(basename "${scene#builtin:}"); name=${name%.*}
+  for similarity in sadp sadp-plane; do
+    step "diagnosis, $name, $similarity" "diagnosis/$name-$similarity.md"
+    $rsaa diagnose --scene "$scene" --similarity "$similarity" --out-dir "$out/diagnosis/$name-$similarity" \
+      >"$out/diagnosis/$name-$similarity.md"
+  done
+  cp "$out/diagnosis/$name-sadp-plane/error_map.png" "docs/images/diagnosis_$name.png"
+done
 step "bench" bench.md
 $rsaa bench --target-psnr 38 --out-dir "$out/bench" >"$out/bench.md"
 cp "$out/bench/pareto-default.png" docs/images/bench_pareto_default.png

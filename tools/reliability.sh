@@ -23,6 +23,61 @@ an unnamed error, an invalid result accepted); the run fails if this is not 0.
 
 $table
 
+The seven "hostile" rows are issue 15's classes of hostile input and environment, fed to
+\`build/rsaa\` as a user would, each run with at most 60 s and 6 GiB of address space
+(RLIMIT_AS); "refused" there also means no output file was left, "accepted" that the valid
+input gave the right result. What each class feeds:
+
+1. **Crashes**: \`view --screenshot\` patterns \`x%n.png\`, \`%s%s%s\`, \`shot-%\` (refused: the
+   program expands \`%d\` and \`%%\` itself, never printf); a glTF node chain 20,000 deep
+   (renders: the loader thread has a 512 MiB stack); \`train --threads 64\` with RLIMIT_NPROC 6
+   as nobody (threads fail to start; the table is the same as with one thread).
+2. **Hangs**: \`/dev/zero\`, \`/dev/urandom\` and FIFOs as images, tables, models, a model's
+   texture, a model's .mtl, a CSV, and \`train --generic\` (refused at once: only regular files
+   are read, opened without blocking).
+3. **Memory**: PNGs declaring 16384x16384 and 100000x1 pixels in a few bytes, a table over
+   16 MiB, assimp's \`OutOfMemory.off\`, an OFF declaring 10^12 vertices, a PLY declaring 4e9,
+   a texture declaring 16384x16384 (refused before allocating, naming the file, the declared
+   size and the limit).
+4. **Mixed or stray output**: two \`rsaa train\` runs into one \`--out-dir\` at once, with a
+   dead run's temporary file beside them (one holds the directory, the other is refused at
+   once naming it; the three files agree; the stale temporary is gone), and a train whose
+   third file cannot be replaced (the first two keep their previous contents).
+5. **Injection and escape**: pattern names with a newline, \`../\` and \`/\`, a table whose
+   pattern is \`custom-../../x\` (refused: a name is letters, digits, '-' and '_').
+6. **Silently wrong**: all-NaN and all-Inf EXRs compared with black (refused: PSNR and SSIM
+   are undefined, never "inf" and 1); a grey+alpha PNG against its composite over black (equal);
+   \`eval-table\` of two tables of one name with other sample positions, custom positions with
+   a subnormal coordinate or coinciding (refused); models at 1e30 and 1e-30 scale and a unit
+   model 10^6 from the origin (refused: outside the range that renders correctly in float).
+7. **The command line**: \`--seed -1\`, \`--cases -1\`, \`--seed 2^64\`, \`--threads 100000\`,
+   \`--two-line-weight nan\`, \`--threshold -1\`, \`--luma-threshold nan\` (refused as typed, no
+   clamping or wrap-around); mistyped subcommands (refused naming the nearest one); a CSV with
+   quoted fields, doubled quotes and commas inside quotes (plotted); a missing \`--out-dir\`
+   (created).
+
+## Budgets
+
+Every reader checks declared sizes against these before allocating, and refuses with the file,
+the declared size and the limit:
+
+| input | budget |
+| --- | --- |
+| table file (\`eval-table\`, \`--generic\`) | 16 MiB (the 16x table is under 3 MB) |
+| image (\`compare\`) | file 512 MiB; 16384 pixels per side, 2^26 pixels |
+| texture of a model | file 256 MiB; 8192 per side, 2^24 pixels each, 2^26 texels per model |
+| model file and every file it refers to (.mtl, .bin) | 256 MiB, regular files only |
+| model contents | 2^24 vertices, 2^25 faces; OFF and PLY header counts against the file size |
+| scene coordinates | \|x\| <= 1e9, extent >= 1e-5 and >= 1e-4 of its distance from the origin (measured: a model renders as at unit scale from 1e-5 to 3e9) |
+| scene loading | 40 s; loader thread stack 512 MiB (smaller under an address-space limit); deeper nesting ends the process with a message naming the scene |
+| CSV (\`plot\`) | 64 MiB |
+| \`--threads\` | 0 to 1024 |
+
+Images are read by their channel layout: grey, grey+alpha, RGB, RGBA (channels after RGB(A)
+are ignored, other layouts refused). Alpha is composited over black: straight alpha (PNG) scales
+the linear colour, premultiplied alpha (EXR) already has. Out of memory despite the budgets is
+reported as an error naming the address-space limit, never a kill.
+
 Other checks of the same kind live in the test suite: GLSL SADP, depth measure, code
 compression and classification at the extremes (tests/test_glsl_extremes.cpp), the CPU and GL
 post-process with NaN/Inf/HDR input and 1x1, 1xN and odd image sizes (tests/test_postprocess_cpu.cpp,
@@ -34,9 +89,18 @@ trainer, their tests and the table fuzz loop with AddressSanitizer and Undefined
 ## Known problems left alone
 
 - assimp 5.2.4 (Debian) loops forever on a PLY file whose header is cut inside a property
-  list. \`rsaa render\` and \`rsaa view\` give up after 120 s with an error naming the file
+  list. \`rsaa render\` and \`rsaa view\` give up after 40 s with an error naming the file
   (\`load_scene_within\`); the mutation loop leaves PLY out for that reason.
 - libpng prints its own messages on stderr for broken PNG files before rsaa's error.
+- Under RLIMIT_NPROC below 5, rsaa cannot start: liblog4cplus (loaded with OpenImageIO's
+  OpenVDB) starts threads in its static initialiser, before main, and aborts when it cannot.
+- A model nested deeper than the loader's stack (a glTF node chain of 1.5 million levels)
+  ends the whole process with "nested too deeply", naming the scene, also for programs that
+  load scenes in-process (rsaa_reliability).
+- \`kill -9\` in the microseconds between the three renames of a table set can still leave a
+  mixed set; the next write removes the dead run's temporaries but does not restore from them.
+- \`rsaa bench\` measures renders in memory: a technique that rendered NaN would show PSNR
+  and SSIM as nan in its report (undefined, not refused).
 MD
 } >docs/reliability.md.tmp
 mv docs/reliability.md.tmp docs/reliability.md

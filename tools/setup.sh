@@ -12,7 +12,9 @@ packages=(
   libopencv-dev libopencv-contrib-dev   # image metrics (PSNR, SSIM in quality), plots
   libglm-dev libopenimageio-dev openimageio-tools
   libglfw3-dev libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  libopengl-dev                         # examples/: GL through libOpenGL, not epoxy
   libassimp-dev assimp-testmodels
+  libcsv-dev                            # rsaa plot: CSV with quoted fields
   xvfb xauth
 )
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/bilinear.h"
 #include "core/case_set.h"
 #include "core/fallback.h"
 #include "trainer/offset_fit.h"
@@ -19,33 +20,69 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 // Offsets are stored rounded to 1e-6 px so that JSON, GLSL and HLSL carry the same decimals.
 double round_offset(double v) { return std::round(v * 1e6) / 1e6 + 0.0; }
 
-}  // namespace
+// Sum over a group's cases of (estimate - coverage_i)^2, from its sums.
+double squared_error_sum(const MaskCases::Group& g, double estimate) {
+  return double(g.count) * estimate * estimate - 2.0 * estimate * g.coverage_sum +
+         g.coverage_square_sum;
+}
 
-std::vector<MaskCases> group_cases_by_mask(const std::vector<CaseRecord>& cases) {
-  // Sort (key, index) pairs: the index breaks ties, so sums run in case order whatever the
-  // thread count that made the cases.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(cases.size());
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    const CaseRecord& c = cases[i];
-    keyed[i] = {(c.mask << 10) | (std::uint64_t(c.line_count - 1) << 9) | c.neighbourhood,
-                std::uint32_t(i)};
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<MaskCases> out;
-  for (std::size_t i = 0; i < keyed.size();) {
-    const CaseRecord& first = cases[keyed[i].second];
-    if (out.empty() || out.back().mask != first.mask) out.push_back({first.mask, {0, 0}, {}});
-    MaskCases::Group g{first.line_count, first.neighbourhood, 0, 0.0};
-    std::size_t j = i;
-    for (; j < keyed.size() && keyed[j].first == keyed[i].first; ++j) {
-      ++g.count;
-      g.coverage_sum += cases[keyed[j].second].coverage;
+TrainingError training_error(const OffsetTable& table, const std::vector<MaskCases>& masks) {
+  std::array<double, kCaseKindCount> table_sum{};
+  std::array<std::array<double, kCaseKindCount>, kOffsetSourceCount> source_sum{};
+  TrainingError out;
+  for (const MaskCases& m : masks) {
+    const int source = static_cast<int>(table.sources[m.mask]);
+    const Vec2 d = table.offsets[m.mask];
+    for (const MaskCases::Group& g : m.groups) {
+      const Neighbourhood3x3 n = Neighbourhood3x3::from_binary_code(g.neighbourhood);
+      // Cancellation can leave a tiny negative sum where every case is matched exactly.
+      const double e2 = std::max(0.0, squared_error_sum(g, bilinear_estimate(n, d.x, d.y)));
+      for (int k : {g.line_count == 1 ? int(kOneLine) : int(kTwoLine), int(kMix)}) {
+        table_sum[k] += e2;
+        source_sum[source][k] += e2;
+        out.table[k].count += g.count;
+        out.by_source[source][k].count += g.count;
+      }
     }
-    out.back().count[g.line_count - 1] += g.count;
-    out.back().groups.push_back(g);
-    i = j;
+  }
+  const auto rms = [](double sum, std::uint64_t n) { return n ? std::sqrt(sum / double(n)) : 0.0; };
+  for (int k = 0; k < kCaseKindCount; ++k) {
+    out.table[k].rms = rms(table_sum[k], out.table[k].count);
+    for (int s = 0; s < kOffsetSourceCount; ++s)
+      out.by_source[s][k].rms = rms(source_sum[s][k], out.by_source[s][k].count);
   }
   return out;
+}
+
+}  // namespace
+
+void CaseGroups::add(const CaseRecord& c) {
+  Sums& s = sums_[(c.mask << 10) | (std::uint64_t(c.line_count - 1) << 9) | c.neighbourhood];
+  ++s.count;
+  s.coverage_sum += c.coverage;
+  s.coverage_square_sum += c.coverage * c.coverage;
+}
+
+std::vector<MaskCases> CaseGroups::by_mask() const {
+  std::vector<std::pair<std::uint64_t, Sums>> sorted(sums_.begin(), sums_.end());
+  std::sort(sorted.begin(), sorted.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<MaskCases> out;
+  for (const auto& [key, s] : sorted) {
+    const Mask mask = key >> 10;
+    const int line_count = int((key >> 9) & 1) + 1;
+    if (out.empty() || out.back().mask != mask) out.push_back({mask, {0, 0}, {}});
+    out.back().count[line_count - 1] += s.count;
+    out.back().groups.push_back({line_count, std::uint16_t(key & 0x1ff), s.count, s.coverage_sum,
+                                 s.coverage_square_sum});
+  }
+  return out;
+}
+
+std::vector<MaskCases> group_cases_by_mask(const std::vector<CaseRecord>& cases) {
+  CaseGroups groups;
+  for (const CaseRecord& c : cases) groups.add(c);
+  return groups.by_mask();
 }
 
 std::array<double, 2> case_weights(const MaskCases& m, const TrainOptions& options) {
@@ -99,14 +136,21 @@ TrainReport train_offset_table(const TrainOptions& options, const TrainProgress&
   };
 
   auto start = std::chrono::steady_clock::now();
-  stage("generating cases");
-  const std::vector<CaseRecord> cases =
-      generate_cases(options.pattern, options.cases, options.seed, options.threads, progress.step);
+  stage("generating cases and merging them by mask and neighbourhood");
+  CaseGroups groups;
+  // Blocks of 2^20 cases (24 MiB): large enough that the threads stay busy, and merged in case
+  // order, so the sums do not depend on the thread count.
+  for_each_case_block(
+      options.pattern, options.cases, options.seed, options.threads, std::uint64_t{1} << 20,
+      [&](const std::vector<CaseRecord>& block) {
+        for (const CaseRecord& c : block) groups.add(c);
+      },
+      progress.step);
+  report.case_groups = groups.group_count();
   report.generate_seconds = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  stage("grouping cases by mask");
-  const std::vector<MaskCases> masks = group_cases_by_mask(cases);
+  const std::vector<MaskCases> masks = groups.by_mask();
   const Mask all_similar = options.pattern.all_similar();
   std::vector<Vec2> fitted(masks.size());
   stage("fitting offsets");
@@ -140,7 +184,7 @@ TrainReport train_offset_table(const TrainOptions& options, const TrainProgress&
       {"cases", options.cases},
       {"seed", options.seed},
       {"fit", to_string(options.fit)},
-      {"case_distribution", "DESIGN.md section 2; even case indices one-line, odd two-line"},
+      {"case_distribution", "docs/conventions.md section 2; even case indices one-line, odd two-line"},
       {"masks_one_line", report.masks_by_source[0]},
       {"masks_two_line", report.masks_by_source[1]},
       {"masks_fallback", report.masks_by_source[2]},
@@ -148,8 +192,7 @@ TrainReport train_offset_table(const TrainOptions& options, const TrainProgress&
   };
   if (options.fit == FitRule::Mixed) table.training["two_line_weight"] = options.two_line_weight;
 
-  stage("measuring the table on its training cases");
-  report.training_accuracy = evaluate_table(table, cases);
+  report.training_error = training_error(table, masks);
   return report;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/case_set.h"
@@ -42,16 +43,29 @@ struct TrainProgress {
   ProgressFn step;
 };
 
+// The RMS error of a table on its own training cases, from the merged groups (the cases are not
+// kept; `rsaa eval-table` gives the other statistics on a case set).
+struct TrainingError {
+  struct Rms {
+    std::uint64_t count = 0;
+    double rms = 0.0;
+  };
+  std::array<Rms, kCaseKindCount> table{};
+  // Cases whose mask entry came from each rule ([source][kind]).
+  std::array<std::array<Rms, kCaseKindCount>, kOffsetSourceCount> by_source{};
+};
+
 struct TrainReport {
   OffsetTable table;
   // Masks by rule: produced by one line / only by two lines / by no case (fallback).
   std::array<std::uint64_t, 3> masks_by_source{};
-  double generate_seconds = 0.0;
+  std::uint64_t case_groups = 0;  // distinct (mask, line count, neighbourhood): what memory holds
+  double generate_seconds = 0.0;  // generating and merging the cases
   double fit_seconds = 0.0;
-  TableAccuracy training_accuracy;  // the table on its own training cases
+  TrainingError training_error;
 };
 
-// The cases of one mask merged by (line count, neighbourhood): count and coverage sum per group.
+// The cases of one mask merged by (line count, neighbourhood): count and coverage sums per group.
 struct MaskCases {
   Mask mask = 0;
   std::uint64_t count[2] = {0, 0};  // one-line, two-line cases
@@ -60,11 +74,31 @@ struct MaskCases {
     std::uint16_t neighbourhood;
     std::uint64_t count;
     double coverage_sum;
+    double coverage_square_sum;  // for the training error without the cases
   };
   std::vector<Group> groups;
 };
 
-// Sorted by mask; sums run in case-index order, so the result never depends on thread count.
+// Cases merged into groups as they arrive: memory grows with the number of distinct (mask, line
+// count, neighbourhood), not with the number of cases. A group's sums run in the order its cases
+// are added, so adding them in case-index order gives the same bits whatever thread count made
+// them.
+class CaseGroups {
+ public:
+  void add(const CaseRecord& c);
+  std::size_t group_count() const { return sums_.size(); }
+  // Sorted by mask; each mask's groups sorted by (line count, neighbourhood).
+  std::vector<MaskCases> by_mask() const;
+
+ private:
+  struct Sums {
+    std::uint64_t count = 0;
+    double coverage_sum = 0.0, coverage_square_sum = 0.0;
+  };
+  std::unordered_map<std::uint64_t, Sums> sums_;  // key: mask << 10 | (line count - 1) << 9 | code
+};
+
+// CaseGroups of `cases` added in order.
 std::vector<MaskCases> group_cases_by_mask(const std::vector<CaseRecord>& cases);
 
 // The weight of one one-line case and of one two-line case of this mask in its fit.

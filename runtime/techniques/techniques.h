@@ -43,6 +43,8 @@ struct AgaaFrameData {
 AgaaFrameData read_back_agaa(Technique& agaa, const View& view);
 std::unique_ptr<Technique> make_hardware_msaa(int samples, int width, int height);
 std::unique_ptr<Technique> make_jittered_supersampling(std::vector<Vec2> positions, int width, int height);
+// The pass settings of rsaa options (validated by the caller).
+RsaaSettings rsaa_settings(const TechniqueOptions& options);
 // mask_output: an R32UI texture that receives the masks when settings.output_mask.
 std::unique_ptr<Technique> make_rsaa(const RsaaSettings& settings, int width, int height,
                                      GLuint mask_output = 0);

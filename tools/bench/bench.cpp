@@ -1,4 +1,5 @@
 #include "tools/bench/bench.h"
+#include "tools/bench/csv.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,8 @@
 #include "core/image_metrics.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"
+#include "tools/bench/copy_pass.h"
+#include "tools/bench/growth.h"
 
 namespace rsaa::bench {
 namespace {
@@ -64,6 +67,7 @@ std::vector<TechniqueOptions> default_techniques() {
   list.push_back(technique_options("agaa", 4));
   list.push_back(technique_options("agaa", 8));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
+  for (const TechniqueOptions& o : rsaa_defaults()) list.push_back(o);
   return list;
 }
 
@@ -74,6 +78,34 @@ std::vector<std::string> default_scenes() {
   scenes.push_back("/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf");
   scenes.push_back("/usr/share/assimp/models/OBJ/spider.obj");
   return scenes;
+}
+
+FrameTiming time_frames(Technique& t, const GpuScene& gpu, const View& view, GLuint output, int frames,
+                        CopyPass& copy) {
+  t.render(gpu, view, output);  // warm-up: shader compilation
+  t.take_pass_times();
+  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> per_pass;
+  std::vector<std::string> pass_order;
+  std::vector<double> frame_ms, copy_ms;
+  for (int k = 0; k < frames; ++k) {
+    t.render(gpu, view, output);
+    double sum = 0.0;
+    for (const PassTime& p : t.take_pass_times()) {
+      if (!per_pass.count(p.pass)) pass_order.push_back(p.pass);
+      per_pass[p.pass].first.push_back(p.wall_milliseconds);
+      per_pass[p.pass].second.push_back(p.milliseconds);
+      sum += p.wall_milliseconds;
+    }
+    frame_ms.push_back(sum);
+    // Beside every frame, so that the ratio sees the same load on the shared machine.
+    copy_ms.push_back(copy.time_ms(output));
+  }
+  FrameTiming out;
+  for (const std::string& pass : pass_order)
+    out.pass_medians.push_back({pass, median(per_pass[pass].second), median(per_pass[pass].first)});
+  out.frame_ms = median(frame_ms);
+  out.copy_ms = median(copy_ms);
+  return out;
 }
 
 std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& progress) {
@@ -87,12 +119,15 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
   const int total = int(o.scenes.size() * (o.techniques.size() + 1));
   int done = 0;
   for (const std::string& spec : o.scenes) {
-    const Scene scene = load_scene_within(spec, 120.0);
+    const Scene loaded = load_scene_within(spec, 120.0);
+    const Camera start = choose_camera(loaded, std::nullopt);
+    const Scene scene = with_lights(loaded, start, o.lights);
     const GpuScene gpu(scene);
     std::vector<Camera> cameras;
-    const Camera start = choose_camera(scene, std::nullopt);
     for (int f = 0; f < o.orbit_frames; ++f) cameras.push_back(orbit_camera(start, f * o.orbit_degrees_per_frame));
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, o.width, o.height);
+    CopyPass copy(o.width, o.height);
+    copy.time_ms(output.get());  // warm-up: shader compilation
 
     if (progress) progress(spec + ": 64x SSAA reference", done, total);
     std::vector<DisplayImage> reference;
@@ -116,25 +151,10 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
       if (progress) progress(spec + ": " + r.label, done, total);
       auto t = make_technique(options, o.width, o.height);
       const View view = make_view(cameras[0], o.width, o.height);
-      t->render(gpu, view, output.get());  // warm-up: shader compilation
-      t->take_pass_times();
-      std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> per_pass;
-      std::vector<std::string> pass_order;
-      std::vector<double> frame_ms;
-      for (int k = 0; k < o.frames; ++k) {
-        t->render(gpu, view, output.get());
-        double sum = 0.0;
-        for (const PassTime& p : t->take_pass_times()) {
-          if (!per_pass.count(p.pass)) pass_order.push_back(p.pass);
-          per_pass[p.pass].first.push_back(p.wall_milliseconds);
-          per_pass[p.pass].second.push_back(p.milliseconds);
-          sum += p.wall_milliseconds;
-        }
-        frame_ms.push_back(sum);
-      }
-      for (const std::string& pass : pass_order)
-        r.pass_medians.push_back({pass, median(per_pass[pass].second), median(per_pass[pass].first)});
-      r.frame_ms = median(frame_ms);
+      const FrameTiming timing = time_frames(*t, gpu, view, output.get(), o.frames, copy);
+      r.pass_medians = timing.pass_medians;
+      r.frame_ms = timing.frame_ms;
+      r.copy_ms = timing.copy_ms;
       if (options.technique == "noaa") noaa_ms = r.frame_ms;
       r.frame_ratio = noaa_ms > 0 ? r.frame_ms / noaa_ms : 1.0;
       r.bytes_per_pixel = t->bytes_per_pixel();
@@ -166,6 +186,10 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
   return results;
 }
 
+double copy_multiple(const TechniqueResult& r, const PassTime& p) {
+  return r.copy_ms > 0 ? p.wall_milliseconds / r.copy_ms : 0.0;
+}
+
 void mark_pareto(std::vector<TechniqueResult>& results) {
   for (TechniqueResult& r : results) {
     r.pareto = true;
@@ -190,15 +214,22 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                         {"width", o.width},
                         {"height", o.height},
                         {"timed_frames", o.frames},
+                        {"lights", o.lights},
                         {"orbit_frames", o.orbit_frames},
                         {"orbit_degrees_per_frame", o.orbit_degrees_per_frame},
                         {"reference", "ssaa 64x"},
                         {"psnr_identical_db", kIdenticalDb},
+                        {"copy_pass", "full-screen RGBA16F -> RGBA8 copy, one texelFetch per pixel, "
+                                      "timed after each timed frame; copy_ms is its median, "
+                                      "copy_multiple = pass wall_ms / copy_ms"},
                         {"results", nlohmann::json::array()}};
   for (const TechniqueResult& r : results) {
     nlohmann::json passes = nlohmann::json::array();
     for (const PassTime& p : r.pass_medians)
-      passes.push_back({{"pass", p.pass}, {"wall_ms", p.wall_milliseconds}, {"gl_timer_ms", p.milliseconds}});
+      passes.push_back({{"pass", p.pass},
+                        {"wall_ms", p.wall_milliseconds},
+                        {"gl_timer_ms", p.milliseconds},
+                        {"copy_multiple", copy_multiple(r, p)}});
     out["results"].push_back({{"scene", r.scene},
                               {"technique", r.label},
                               {"options", {{"technique", r.options.technique},
@@ -211,6 +242,7 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                               {"passes", passes},
                               {"frame_ms", r.frame_ms},
                               {"frame_ratio_to_noaa", r.frame_ratio},
+                              {"copy_ms", r.copy_ms},
                               {"psnr_db", r.psnr_db},
                               {"ssim", r.ssim},
                               {"luma_error_share_percent", r.luma_error_share},
@@ -225,14 +257,18 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
 std::string results_csv(const std::vector<TechniqueResult>& results) {
   std::ostringstream s;
   s << "scene,technique,frame_ms,frame_ratio_to_noaa,psnr_db,ssim,luma_error_share_percent,"
-       "orbit_psnr_db,flicker_psnr_db,bytes_per_pixel,pareto,passes_wall_ms\n";
+       "orbit_psnr_db,flicker_psnr_db,bytes_per_pixel,pareto,passes_wall_ms,copy_ms,passes_copy_multiple\n";
   for (const TechniqueResult& r : results) {
-    s << '"' << r.scene << "\",\"" << r.label << "\"," << r.frame_ms << ',' << r.frame_ratio << ','
+    s << csv_text(r.scene) << ',' << csv_text(r.label) << ',' << r.frame_ms << ',' << r.frame_ratio << ','
       << r.psnr_db << ',' << r.ssim << ',' << r.luma_error_share << ',' << r.orbit_psnr_db << ','
-      << r.flicker_psnr_db << ',' << r.bytes_per_pixel << ',' << (r.pareto ? 1 : 0) << ",\"";
+      << r.flicker_psnr_db << ',' << r.bytes_per_pixel << ',' << (r.pareto ? 1 : 0) << ',';
+    std::ostringstream passes;
     for (std::size_t i = 0; i < r.pass_medians.size(); ++i)
-      s << (i ? ";" : "") << r.pass_medians[i].pass << '=' << r.pass_medians[i].wall_milliseconds;
-    s << "\"\n";
+      passes << (i ? ";" : "") << r.pass_medians[i].pass << '=' << r.pass_medians[i].wall_milliseconds;
+    std::ostringstream multiples;
+    for (std::size_t i = 0; i < r.pass_medians.size(); ++i)
+      multiples << (i ? ";" : "") << r.pass_medians[i].pass << '=' << copy_multiple(r, r.pass_medians[i]);
+    s << csv_text(passes.str()) << ',' << r.copy_ms << ',' << csv_text(multiples.str()) << '\n';
   }
   return s.str();
 }
@@ -245,6 +281,7 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
     o.width = j.at("width");
     o.height = j.at("height");
     o.frames = j.at("timed_frames");
+    o.lights = j.value("lights", 1);
     o.orbit_frames = j.at("orbit_frames");
     std::vector<TechniqueResult> results;
     for (const auto& e : j.at("results")) {
@@ -263,6 +300,7 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
         r.pass_medians.push_back({p.at("pass"), p.at("gl_timer_ms"), p.at("wall_ms")});
       r.frame_ms = e.at("frame_ms");
       r.frame_ratio = e.at("frame_ratio_to_noaa");
+      r.copy_ms = e.value("copy_ms", 0.0);
       r.psnr_db = e.at("psnr_db");
       r.ssim = e.at("ssim");
       r.luma_error_share = e.at("luma_error_share_percent");
@@ -299,7 +337,8 @@ std::string signed_db(const TechniqueResult* a, const TechniqueResult* b) {
 std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueResult>& results) {
   std::ostringstream s;
   char line[512];
-  s << o.width << "x" << o.height << ", median of " << o.frames << " timed frames after a warm-up, orbit of "
+  s << o.width << "x" << o.height << ", " << o.lights << (o.lights == 1 ? " light" : " lights")
+    << ", median of " << o.frames << " timed frames after a warm-up, orbit of "
     << o.orbit_frames << " frames; * = on the Pareto front (frame-time ratio down, PSNR up)\n\n";
   s << "| scene | technique | PSNR dB | SSIM | luma err % | orbit PSNR | flicker PSNR | frame ms | x noaa | B/px |\n";
   s << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
@@ -310,6 +349,21 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
                   scene_short_name(r.scene).c_str(), r.pareto ? "* " : "", r.label.c_str(), r.psnr_db, r.ssim,
                   r.luma_error_share, r.orbit_psnr_db, r.flicker_psnr_db, r.frame_ms, r.frame_ratio,
                   r.bytes_per_pixel);
+    s << line;
+  }
+  s << "\nPer pass: wall ms and, in brackets, the multiple of a full-screen copy pass (RGBA16F -> RGBA8, one "
+       "texelFetch) timed beside each frame at the same size: the speed of light of a post-process.\n\n";
+  s << "| scene | technique | copy ms | passes: ms (x copy) |\n";
+  s << "| --- | --- | --- | --- |\n";
+  for (const TechniqueResult& r : results) {
+    std::string passes;
+    for (const PassTime& p : r.pass_medians) {
+      std::snprintf(line, sizeof line, "%s%s %.1f (%.1fx)", passes.empty() ? "" : ", ", p.pass.c_str(),
+                    p.wall_milliseconds, copy_multiple(r, p));
+      passes += line;
+    }
+    std::snprintf(line, sizeof line, "| %s | %s | %.2f | %s |\n", scene_short_name(r.scene).c_str(), r.label.c_str(),
+                  r.copy_ms, passes.c_str());
     s << line;
   }
   s << "\nPer scene: the paper's trades (it reports about +4 dB for 8 over 4 samples and up to +3 dB "

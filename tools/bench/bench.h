@@ -1,4 +1,4 @@
-// rsaa bench: the speed/accuracy trade of every technique on a set of scenes (DESIGN.md
+// rsaa bench: the speed/accuracy trade of every technique on a set of scenes (docs/conventions.md
 // section 5): per-pass and whole-frame times (medians, warm-up excluded, as ratios to the no-AA
 // frame of the same run), PSNR / SSIM / luminance-error share against 64x SSAA, temporal quality
 // over a short camera orbit, and memory per pixel.
@@ -19,6 +19,7 @@ struct BenchOptions {
   std::vector<TechniqueOptions> techniques;  // the first must be noaa (the ratio baseline)
   int width = 640, height = 480;
   int frames = 5;        // timed frames per technique (after one warm-up frame)
+  int lights = 1;        // the fixed light plus lights - 1 point lights (growth.h: with_lights)
   int orbit_frames = 4;  // frames of the camera animation for the temporal metrics
   double orbit_degrees_per_frame = 0.25;
   // When set, one side-by-side crop image per scene is written here (crops-<scene>.png).
@@ -31,6 +32,9 @@ struct TechniqueResult {
   std::vector<PassTime> pass_medians;  // median over the timed frames, per pass
   double frame_ms = 0.0;               // median of the frames' summed wall-clock pass times
   double frame_ratio = 0.0;            // frame_ms / noaa frame_ms of the same scene
+  // The speed of light: median wall time of a full-screen copy pass (copy_pass.h) timed after
+  // each of this technique's timed frames, at the same size; 0 in files from before it existed.
+  double copy_ms = 0.0;
   double psnr_db = 0.0, ssim = 0.0, luma_error_share = 0.0;  // static frame vs 64x SSAA
   double orbit_psnr_db = 0.0;    // mean per-frame PSNR over the orbit
   double flicker_psnr_db = 0.0;  // PSNR of frame-to-frame differences vs the reference's
@@ -46,8 +50,21 @@ std::vector<std::string> default_scenes();
 
 using Progress = std::function<void(const std::string& what, int done, int total)>;
 
+class CopyPass;
+struct FrameTiming {
+  std::vector<PassTime> pass_medians;  // median over the timed frames, per pass
+  double frame_ms = 0.0;               // median of the frames' summed wall-clock pass times
+  double copy_ms = 0.0;                // median of the copy pass timed after each frame
+};
+// One warm-up frame, then `frames` timed frames of `technique`, each followed by `copy`.
+FrameTiming time_frames(Technique& technique, const GpuScene& scene, const View& view, GLuint output,
+                        int frames, CopyPass& copy);
+
 // Needs a current GL context.
 std::vector<TechniqueResult> run_bench(const BenchOptions& options, const Progress& progress);
+
+// A pass's wall time as a multiple of the copy pass timed beside it (0 when unknown).
+double copy_multiple(const TechniqueResult& result, const PassTime& pass);
 
 // Marks the Pareto front of each scene (time ratio down, PSNR up).
 void mark_pareto(std::vector<TechniqueResult>& results);

@@ -8,6 +8,7 @@
 #include "core/colour.h"
 #include "core/image_io.h"
 #include "tools/bench/bench.h"
+#include "tools/bench/growth.h"
 
 namespace rsaa::bench {
 namespace {
@@ -15,24 +16,26 @@ namespace {
 const cv::Scalar kInk(40, 40, 40), kGrid(220, 220, 220);
 
 // Technique families by colour (BGR).
-cv::Scalar family_colour(const TechniqueResult& r) {
-  if (r.options.technique == "noaa") return {0, 0, 0};
-  if (r.options.technique == "fxaa") return {160, 40, 160};
-  if (r.options.technique == "msaa") return {200, 110, 30};
-  if (r.options.technique == "ssaa") return {40, 150, 40};
-  if (r.options.technique == "ssaa-filtered") return {120, 160, 20};
-  if (r.options.technique == "dcaa") return {20, 180, 200};
-  if (r.options.technique == "dyncov") return {0, 110, 160};
-  if (r.options.technique == "agaa") return {110, 110, 110};
-  return r.options.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);
+cv::Scalar family_colour(const TechniqueOptions& o) {
+  if (o.technique == "noaa") return {0, 0, 0};
+  if (o.technique == "fxaa") return {160, 40, 160};
+  if (o.technique == "msaa") return {200, 110, 30};
+  if (o.technique == "ssaa") return {40, 150, 40};
+  if (o.technique == "ssaa-filtered") return {120, 160, 20};
+  if (o.technique == "dcaa") return {20, 180, 200};
+  if (o.technique == "dyncov") return {0, 110, 160};
+  if (o.technique == "agaa") return {110, 110, 110};
+  return o.similarity == "depth" ? cv::Scalar(30, 140, 240) : cv::Scalar(40, 40, 210);
 }
+cv::Scalar family_colour(const TechniqueResult& r) { return family_colour(r.options); }
 
 // "R8 sadp 1" for rsaa 8x sadp auth1, the label itself otherwise.
-std::string short_label(const TechniqueResult& r) {
-  if (r.options.technique != "rsaa") return r.label;
-  const int samples = r.options.samples ? r.options.samples : 8;
-  return "R" + std::to_string(samples) + " " + r.options.similarity + " a" + std::to_string(r.options.auth);
+std::string short_label(const std::string& label, const TechniqueOptions& o) {
+  if (o.technique != "rsaa") return label;
+  const int samples = o.samples ? o.samples : 8;
+  return "R" + std::to_string(samples) + " " + o.similarity + " a" + std::to_string(o.auth);
 }
+std::string short_label(const TechniqueResult& r) { return short_label(r.label, r.options); }
 
 void save(const cv::Mat& canvas, const std::string& path) {
   Image image(canvas.cols, canvas.rows);
@@ -114,6 +117,80 @@ void plot_pareto(const std::vector<TechniqueResult>& results, const std::string&
   save(canvas, path);
 }
 
+void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::string& path) {
+  std::vector<const GrowthPoint*> points;
+  for (const GrowthPoint& p : results.points)
+    if (p.axis == axis && p.frame_ms > 0) points.push_back(&p);
+  if (points.empty()) return;
+  const int width = 1060, height = 600, left = 70, right = 330, top = 50, bottom = 60;
+  cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  double x_lo = 1e300, x_hi = 0, y_lo = 1e300, y_hi = 0;
+  for (const auto* p : points) {
+    x_lo = std::min(x_lo, p->x()), x_hi = std::max(x_hi, p->x());
+    y_lo = std::min(y_lo, p->frame_ms), y_hi = std::max(y_hi, p->frame_ms);
+  }
+  // log2 axes: a doubling is one grid step, and a line's slope is its growth exponent.
+  x_lo = std::log2(x_lo) - 0.2, x_hi = std::log2(x_hi) + 0.2;
+  y_lo = std::floor(std::log2(y_lo)), y_hi = std::ceil(std::log2(y_hi));
+  if (x_hi - x_lo < 1) x_hi = x_lo + 1;
+  if (y_hi - y_lo < 1) y_hi = y_lo + 1;
+  const auto px = [&](double x) { return left + int((std::log2(x) - x_lo) / (x_hi - x_lo) * (width - left - right)); };
+  const auto py = [&](double ms) {
+    return height - bottom - int((std::log2(ms) - y_lo) / (y_hi - y_lo) * (height - top - bottom));
+  };
+  for (int e = int(y_lo); e <= int(y_hi); ++e) {
+    cv::line(canvas, {left, py(std::pow(2.0, e))}, {width - right, py(std::pow(2.0, e))}, kGrid);
+    char label[32];
+    std::snprintf(label, sizeof label, "%g", std::pow(2.0, e));
+    text(canvas, label, {left - 45, py(std::pow(2.0, e)) + 5});
+  }
+  std::vector<double> xs;
+  for (const auto* p : points)
+    if (std::find(xs.begin(), xs.end(), p->x()) == xs.end()) xs.push_back(p->x());
+  for (double x : xs) {
+    cv::line(canvas, {px(x), top}, {px(x), height - bottom}, kGrid);
+    char label[48];
+    if (axis == GrowthAxis::Pixels) {
+      const auto* p = *std::find_if(points.begin(), points.end(), [&](auto* q) { return q->x() == x; });
+      std::snprintf(label, sizeof label, "%dx%d", p->width, p->height);
+    } else if (axis == GrowthAxis::Triangles) {
+      std::snprintf(label, sizeof label, "%.0fk", x / 1000.0);
+    } else {
+      std::snprintf(label, sizeof label, "%.0f", x);
+    }
+    text(canvas, label, {px(x) - 30, height - bottom + 20});
+  }
+  cv::rectangle(canvas, {left, top}, {width - right, height - bottom}, kInk);
+  text(canvas,
+       axis == GrowthAxis::Pixels      ? "image size (pixels, log scale)"
+       : axis == GrowthAxis::Triangles ? "triangles (log scale)"
+                                       : "lights N (log scale): the fixed light + N - 1 point lights",
+       {left + 200, height - 15}, 0.5);
+  text(canvas, "frame ms (log scale): " + scene_short_name(results.scene), {10, top - 15}, 0.5);
+  int legend_y = top + 10;
+  std::vector<std::string> drawn;
+  const auto slopes = growth_slopes(results);
+  for (const GrowthSlope& s : slopes) {
+    if (s.axis != axis) continue;
+    const cv::Scalar colour = family_colour(s.options);
+    const GrowthPoint* previous = nullptr;
+    for (const auto* p : points) {
+      if (p->label != s.label) continue;
+      cv::circle(canvas, {px(p->x()), py(p->frame_ms)}, 3, colour, -1, cv::LINE_AA);
+      if (previous)
+        cv::line(canvas, {px(previous->x()), py(previous->frame_ms)}, {px(p->x()), py(p->frame_ms)}, colour, 1,
+                 cv::LINE_AA);
+      previous = p;
+    }
+    text(canvas, short_label(s.label, s.options), {width - right + 10, legend_y}, 0.4, colour);
+    char line[96];
+    std::snprintf(line, sizeof line, "exponent %.2f", s.exponent);
+    text(canvas, line, {width - right + 170, legend_y}, 0.4, colour);
+    legend_y += 17;
+  }
+  save(canvas, path);
+}
+
 void plot_pass_times(const std::vector<TechniqueResult>& results, const std::string& scene, const std::string& path) {
   const auto rows = of_scene(results, scene);
   if (rows.empty()) return;
@@ -156,49 +233,29 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
 
 }  // namespace rsaa::bench
 
-#include <fstream>
-#include <sstream>
+#include "tools/bench/csv.h"
 
 namespace rsaa::bench {
 
 void plot_csv(const std::string& csv_path, const std::string& x_column, const std::vector<std::string>& y_columns,
               bool log_x, const std::string& title, const std::string& png_path) {
-  std::ifstream in(csv_path);
-  if (!in) throw std::runtime_error(csv_path + ": cannot open");
-  std::string line;
-  std::vector<std::string> header;
-  if (!std::getline(in, line)) throw std::runtime_error(csv_path + ": empty");
-  {
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) header.push_back(cell);
-  }
+  // Quoted text columns (the bench's own CSV) are fine; the columns drawn must be numbers.
+  const CsvTable table = read_csv(csv_path);
   const auto column = [&](const std::string& name) {
-    const auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end()) throw std::runtime_error(csv_path + ": no column '" + name + "'");
-    return std::size_t(it - header.begin());
+    const auto it = std::find(table.header.begin(), table.header.end(), name);
+    if (it == table.header.end()) throw std::runtime_error(csv_path + ": no column '" + name + "'");
+    return std::size_t(it - table.header.begin());
   };
   const std::size_t xc = column(x_column);
   std::vector<std::size_t> ycs;
   for (const auto& y : y_columns) ycs.push_back(column(y));
   std::vector<double> xs;
   std::vector<std::vector<double>> ys(ycs.size());
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.empty()) continue;
-    std::vector<double> values;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) {
-      try {
-        values.push_back(std::stod(cell));
-      } catch (const std::exception&) {
-        throw std::runtime_error(csv_path + ": row " + std::to_string(row) + ": '" + cell + "' is not a number");
-      }
-    }
-    if (values.size() != header.size()) throw std::runtime_error(csv_path + ": row " + std::to_string(row) + " has " + std::to_string(values.size()) + " cells");
-    if (log_x && !(values[xc] > 0)) throw std::runtime_error(csv_path + ": log x needs positive values");
-    xs.push_back(log_x ? std::log10(values[xc]) : values[xc]);
-    for (std::size_t k = 0; k < ycs.size(); ++k) ys[k].push_back(values[ycs[k]]);
+  for (std::size_t row = 0; row < table.rows.size(); ++row) {
+    const double x = csv_number(table, csv_path, row, xc);
+    if (log_x && !(x > 0)) throw std::runtime_error(csv_path + ": log x needs positive values");
+    xs.push_back(log_x ? std::log10(x) : x);
+    for (std::size_t k = 0; k < ycs.size(); ++k) ys[k].push_back(csv_number(table, csv_path, row, ycs[k]));
   }
   if (xs.size() < 2) throw std::runtime_error(csv_path + ": needs at least two rows");
   double x_lo = *std::min_element(xs.begin(), xs.end()), x_hi = *std::max_element(xs.begin(), xs.end());

@@ -10,7 +10,9 @@
 #include "runtime/gl_context.h"
 #include "runtime/scene.h"
 #include "tools/bench/bench.h"
+#include "tools/bench/growth.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 
 namespace rsaa::cli {
 namespace {
@@ -23,6 +25,8 @@ struct BenchArgs {
   std::string out_dir = "out/bench";
   double target_psnr = 0.0;
   std::string from_json;
+  bool growth = false;
+  std::string lights;
 };
 
 std::vector<std::string> split(const std::string& list) {
@@ -34,7 +38,61 @@ std::vector<std::string> split(const std::string& list) {
   return out;
 }
 
+std::vector<int> light_counts(const std::string& list) {
+  std::vector<int> out;
+  for (const std::string& item : split(list)) {
+    std::size_t end = 0;
+    int n = -1;
+    try {
+      n = std::stoi(item, &end);
+    } catch (const std::exception&) {
+    }
+    if (end != item.size() || n < 1) throw std::invalid_argument("--lights: '" + item + "' is not a light count >= 1");
+    out.push_back(n);
+  }
+  return out;
+}
+
+// rsaa bench --growth: frame time against image size and triangle count, plots and slopes.
+int run_growth_command(const BenchArgs& a) {
+  bench::GrowthOptions o;
+  o.techniques = bench::default_techniques();
+  if (a.quick) {
+    o.sizes = {{160, 120}, {320, 240}};
+    o.subdivision_levels = {0, 1};
+    o.light_counts = {1, 4};
+    o.width = 160, o.height = 120, o.frames = 2;
+  } else {
+    o.light_counts = {1, 2, 4, 8, 16, 32};
+    o.width = a.width, o.height = a.height, o.frames = a.frames;
+  }
+  if (!a.lights.empty()) o.light_counts = light_counts(a.lights);
+  if (!a.scenes.empty()) {
+    const auto scenes = split(a.scenes);
+    if (scenes.size() != 1) throw std::invalid_argument("--growth measures one scene: give one in --scenes");
+    o.scene = scenes.front();
+  }
+  if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
+    throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
+  gl::HeadlessContext context;
+  const auto results = bench::run_growth(o, [](const std::string& what, int done, int total) {
+    std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
+  });
+  write_file_atomically(a.out_dir + "/growth.json", bench::growth_json(o, results));
+  write_file_atomically(a.out_dir + "/growth.csv", bench::growth_csv(results));
+  bench::plot_growth(results, bench::GrowthAxis::Pixels, a.out_dir + "/growth-pixels.png");
+  bench::plot_growth(results, bench::GrowthAxis::Triangles, a.out_dir + "/growth-triangles.png");
+  bench::plot_growth(results, bench::GrowthAxis::Lights, a.out_dir + "/growth-lights.png");
+  const std::string report = bench::growth_markdown(o, results);
+  write_file_atomically(a.out_dir + "/growth.md", report);
+  std::printf("%s", report.c_str());
+  std::fprintf(stderr, "wrote %s/growth.json, growth.csv, growth.md, growth-{pixels,triangles,lights}.png\n",
+               a.out_dir.c_str());
+  return 0;
+}
+
 int run_bench_command(BenchArgs a) {
+  if (a.growth) return run_growth_command(a);
   bench::BenchOptions o;
   o.techniques = bench::default_techniques();
   if (a.quick) {
@@ -58,6 +116,11 @@ int run_bench_command(BenchArgs a) {
     o.techniques = chosen;
   }
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
+  if (!a.lights.empty()) {
+    const auto lights = light_counts(a.lights);
+    if (lights.size() != 1) throw std::invalid_argument("--lights: one count, or a list with --growth");
+    o.lights = lights.front();
+  }
   if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
     throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
 
@@ -117,7 +180,16 @@ Action add_bench_command(CLI::App& app) {
       ->check(CLI::Range(2, 1000));
   cmd->add_flag("--quick", args->quick, "CI-scale run: 2 scenes, 160x120, 3 frames, 3 orbit frames");
   cmd->add_option("--out-dir", args->out_dir, "Where bench.json, bench.csv and the plots go")->capture_default_str();
-  cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)");
+  cmd->add_option("--target-psnr", args->target_psnr, "Also name the cheapest technique reaching this PSNR (dB)")
+      ->check(finite_range(0.0, 1000.0));
+  cmd->add_flag("--growth", args->growth,
+                "Instead: frame time of every technique against image size (640x480 to 2560x1440), "
+                "triangle count (the scene subdivided 1x, 4x, 16x) and light count (--lights, default "
+                "1,2,4,8,16,32) at --width x --height, with slopes; one scene (default builtin:default); "
+                "writes growth.{json,csv,md} and growth-*.png");
+  cmd->add_option("--lights", args->lights,
+                  "Shade with the fixed light plus N - 1 point lights (default 1: the fixed light only); "
+                  "with --growth a comma-separated list of N");
   cmd->add_option("--from-json", args->from_json,
                   "Report and plot a previous run's bench.json again instead of measuring");
   return [args] { return run_bench_command(*args); };

@@ -1,11 +1,15 @@
 // rsaa compare: PSNR, SSIM and the luminance-error share of an image against a reference.
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <utility>
 #include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "core/image_metrics.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 
 namespace rsaa::cli {
 namespace {
@@ -19,8 +23,18 @@ struct CompareArgs {
 int run_compare(const CompareArgs& a) {
   if (!(a.luma_threshold > 0.0 && a.luma_threshold < 1.0))
     throw std::invalid_argument("--luma-threshold must be within (0, 1)");
-  const ImageComparison c =
-      compare_images(read_display_image(a.image), read_display_image(a.reference), a.luma_threshold);
+  const DisplayImage image = read_display_image(a.image);
+  const DisplayImage reference = read_display_image(a.reference);
+  const ImageComparison c = compare_images(image, reference, a.luma_threshold);
+  // NaN or infinite pixels make every figure undefined: refused, never reported as a number.
+  if (!c.defined()) {
+    std::string which;
+    for (const auto& [path, count] : {std::pair{a.image, c.non_finite_a}, std::pair{a.reference, c.non_finite_reference}})
+      if (count)
+        which += (which.empty() ? "" : "; ") + path + ": " + std::to_string(count) + " of " +
+                 std::to_string(std::uint64_t(image.width) * image.height) + " pixels are NaN or infinite";
+    throw std::runtime_error(which + " (PSNR and SSIM are undefined)");
+  }
   if (a.json) {
     nlohmann::json out = {{"image", a.image},
                           {"reference", a.reference},
@@ -47,7 +61,8 @@ Action add_compare_command(CLI::App& app) {
   cmd->add_option("B", args->reference, "Reference image (e.g. ssaa --samples 64)")->required();
   cmd->add_option("--luma-threshold", args->luma_threshold,
                   "|Y(A) - Y(B)| above this counts as an error (display values in [0, 1])")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_range(0.0, 1.0));
   cmd->add_flag("--json", args->json, "Print JSON");
   return [args] { return run_compare(*args); };
 }

@@ -8,6 +8,7 @@
 #include "core/case_set.h"
 #include "core/table_accuracy.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 #include "tools/cli/progress.h"
 
 namespace rsaa::cli {
@@ -94,11 +95,22 @@ int run_eval(const EvalArgs& a) {
   for (const std::string& file : a.files) {
     tables.push_back(read_offset_table(file));
     const OffsetTable& t = tables.back();
-    if (t.pattern.positions.size() != tables.front().pattern.positions.size() ||
-        t.pattern.name != tables.front().pattern.name)
+    // One case set serves every table: the sample positions must be the same, not only the
+    // name (two custom-x or gl4x tables can differ).
+    const SamplePattern& first = tables.front().pattern;
+    if (t.pattern.name != first.name)
       throw std::invalid_argument(file + ": pattern " + t.pattern.name + " differs from " +
-                                  tables.front().pattern.name + " of " + a.files.front() +
+                                  first.name + " of " + a.files.front() +
                                   "; compare tables of one pattern");
+    if (t.pattern.positions.size() != first.positions.size())
+      throw std::invalid_argument(file + ": pattern " + t.pattern.name + " has " +
+                                  std::to_string(t.pattern.size()) + " samples, " + a.files.front() +
+                                  " has " + std::to_string(first.size()) + "; compare tables of one pattern");
+    for (std::size_t i = 0; i < first.positions.size(); ++i)
+      if (t.pattern.positions[i].x != first.positions[i].x || t.pattern.positions[i].y != first.positions[i].y)
+        throw std::invalid_argument(file + ": samples[" + std::to_string(i) + "] differs from " +
+                                    a.files.front() + " (pattern " + first.name +
+                                    " with other sample positions); compare tables of one pattern");
     const auto seed = t.training.find("seed");
     if (seed != t.training.end() && seed->is_number_unsigned() && seed->get<std::uint64_t>() == a.seed)
       std::fprintf(stderr,
@@ -145,13 +157,14 @@ Action add_eval_table_command(CLI::App& app) {
   cmd->add_option("files", args->files, "Table files (JSON)")->required();
   cmd->add_option("--cases", args->cases, "Number of fresh cases, half one-line, half two-line")
       ->capture_default_str()
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 32));
+      ->check(whole_range(1, std::uint64_t{1} << 32));
   cmd->add_option("--seed", args->seed, "Seed of the fresh cases (use one the trainer did not)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kWholeNumber);
   cmd->add_flag("--json", args->json, "Print JSON instead of a table");
   cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_range(0, kMaxThreads));
   return [args] { return run_eval(*args); };
 }
 

@@ -49,7 +49,7 @@ Action add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render one image of a scene with one technique (headless)");
   cmd->add_option("--scene", args->scene,
-                  "builtin:default|fence|star|edges|distant|interpenetrating, or a model file "
+                  "builtin:default|fence|star|edges|distant|interpenetrating|grazing, or a model file "
                   "assimp reads (OBJ, glTF, PLY, 3DS, ...)")
       ->capture_default_str();
   add_technique_options(cmd, args->technique);

@@ -13,7 +13,9 @@
 #include "runtime/rsaa_pass.h"
 #include "runtime/scene.h"
 #include "tools/bench/scene_tables.h"
+#include "core/atomic_file.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 #include "tools/cli/progress.h"
 #include "trainer/train.h"
 
@@ -51,10 +53,29 @@ std::vector<Vec2> parse_positions(const std::string& text) {
   return out;
 }
 
-std::string rms_text(const ErrorStats& s) {
+std::string rms_text(const TrainingError::Rms& s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.5f", s.rms);
   return s.count ? buffer : "-";
+}
+
+// The output directory, created if missing, and held exclusively until the three files are in
+// place: a second train into it is refused at once instead of mixing its files with ours.
+std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error || !std::filesystem::is_directory(dir))
+    throw std::invalid_argument("--out-dir: cannot create '" + dir + "'" +
+                                (error ? " (" + error.message() + ")" : ""));
+  return std::make_unique<DirectoryLock>(dir, "rsaa train");
+}
+
+// A file-name stem from a scene name: letters, digits, '-' and '_' kept, anything else '_'.
+std::string stem_text(const std::string& name) {
+  std::string out;
+  for (char c : name.substr(0, 48))
+    out += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  return out.empty() ? "scene" : out;
 }
 
 double peak_memory_mib() {
@@ -67,8 +88,7 @@ double peak_memory_mib() {
 int run_train_from_scene(const TrainArgs& a) {
   if (!a.pattern.empty() && a.pattern != "d3d8x")
     throw std::invalid_argument("--from-scene trains d3d8x tables only (RSAA 8x masks)");
-  if (!std::filesystem::is_directory(a.out_dir))
-    throw std::invalid_argument("--out-dir: '" + a.out_dir + "' is not a directory");
+  const auto lock = claim_out_dir(a.out_dir);
   const OffsetTable generic = read_offset_table(a.generic);
   bench::SceneTableOptions o;
   o.scene = a.from_scene;
@@ -77,7 +97,7 @@ int run_train_from_scene(const TrainArgs& a) {
   const auto report = bench::train_scene_table(o, generic, [&](const std::string& s) {
     if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());
   });
-  const std::string stem = "d3d8x-" + scene_short_name(a.from_scene);
+  const std::string stem = "d3d8x-" + stem_text(scene_short_name(a.from_scene));
   const auto paths = write_offset_table_files(report.table, a.out_dir, stem);
   std::printf("rsaa train --from-scene %s: %dx%d, %d training views, %llu edge pixels, %zu masks occur, "
               "%d fitted (>= %d pixels), the rest from %s\n",
@@ -114,8 +134,7 @@ int run_train(const TrainArgs& a) {
   options.fit = a.fit == "ockham" ? FitRule::Ockham : FitRule::Mixed;
   options.two_line_weight = a.two_line_weight;
   options.threads = a.threads;
-  if (!std::filesystem::is_directory(a.out_dir))
-    throw std::invalid_argument("--out-dir: '" + a.out_dir + "' is not a directory");
+  const auto lock = claim_out_dir(a.out_dir);
 
   const int threads = a.threads > 0 ? a.threads : default_thread_count();
   std::printf("rsaa train: pattern %s (%d subsamples, %zu masks), %llu cases, seed %llu, fit %s",
@@ -136,12 +155,14 @@ int run_train(const TrainArgs& a) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const auto& by = report.masks_by_source;
-  const auto& acc = report.training_accuracy;
+  const auto& acc = report.training_error;
   std::printf("  cases:   %llu generated in %.2f s (%.0f cases/s)\n",
               static_cast<unsigned long long>(a.cases), report.generate_seconds,
               a.cases / std::max(report.generate_seconds, 1e-9));
-  std::printf("  fit:     %llu masks reached, fitted in %.2f s (the all-similar mask stays (0, 0))\n",
-              static_cast<unsigned long long>(by[0] + by[1]), report.fit_seconds);
+  std::printf("  fit:     %llu masks reached (%llu case groups), fitted in %.2f s (the all-similar "
+              "mask stays (0, 0))\n",
+              static_cast<unsigned long long>(by[0] + by[1]),
+              static_cast<unsigned long long>(report.case_groups), report.fit_seconds);
   std::printf("  masks:   %llu explained by one line, %llu only by two lines, %llu by no case "
               "(fallback rule)\n",
               static_cast<unsigned long long>(by[0]), static_cast<unsigned long long>(by[1]),
@@ -174,9 +195,11 @@ Action add_train_command(CLI::App& app) {
                   "Subsample positions in pixel space (+y down), \"x,y x,y ...\"");
   cmd->add_option("--cases", args->cases, "Number of line cases, half one-line, half two-line")
       ->capture_default_str()
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 32));
-  cmd->add_option("--seed", args->seed, "Random seed of the case set")->capture_default_str();
-  cmd->add_option("--out-dir", args->out_dir, "Directory for the three table files")
+      ->check(whole_range(1, std::uint64_t{1} << 32));
+  cmd->add_option("--seed", args->seed, "Random seed of the case set")->capture_default_str()
+      ->check(kWholeNumber);
+  cmd->add_option("--out-dir", args->out_dir,
+                  "Directory for the three table files (created if missing; one train at a time)")
       ->capture_default_str();
   cmd->add_option("--fit", args->fit,
                   "ockham: one-line cases where one line explains the mask, else two-line "
@@ -186,20 +209,22 @@ Action add_train_command(CLI::App& app) {
   cmd->add_option("--two-line-weight", args->two_line_weight,
                   "Weight w of two-line cases in the mixed fit (one-line cases get 1 - w)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finite_range(0.0, 1.0));
   cmd->add_option("--threads", args->threads, "Worker threads (0 = all cores; never changes output)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_range(0, kMaxThreads));
   cmd->add_flag("--quiet", args->quiet, "No progress on stderr");
   cmd->add_option("--from-scene", args->from_scene,
                   "Fit a d3d8x table on this scene's own cases (builtin:NAME or a model): writes "
                   "DIR/d3d8x-NAME.*, reports the masks that occur and held-out PSNR");
   cmd->add_option("--generic", args->generic, "--from-scene: the table for masks the scene rarely reaches")
       ->capture_default_str();
-  cmd->add_option("--width", args->width, "--from-scene: render width")->capture_default_str();
-  cmd->add_option("--height", args->height, "--from-scene: render height")->capture_default_str();
+  cmd->add_option("--width", args->width, "--from-scene: render width")->capture_default_str()
+      ->check(kWholeNumber);
+  cmd->add_option("--height", args->height, "--from-scene: render height")->capture_default_str()
+      ->check(kWholeNumber);
   cmd->add_option("--views", args->views, "--from-scene: training camera views")->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->check(whole_range(1, 100));
   return [args] { return run_train(*args); };
 }
 

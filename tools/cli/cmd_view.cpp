@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -29,9 +31,32 @@ struct ViewArgs {
   std::string keys;
 };
 
+// The screenshot file name: "%d" is the screenshot's number, "%%" a '%'. Expanded here, never
+// by printf: a user's "%n" or "%s" would make printf write or read memory.
+std::string screenshot_name(const std::string& pattern, int number) {
+  std::string out;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') {
+      out += pattern[i];
+      continue;
+    }
+    const char next = i + 1 < pattern.size() ? pattern[i + 1] : '\0';
+    if (next == 'd') {
+      out += std::to_string(number);
+    } else if (next == '%') {
+      out += '%';
+    } else {
+      throw std::invalid_argument("--screenshot: '" + pattern + "': after '%' only 'd' (the number) or "
+                                  "'%' may follow");
+    }
+    ++i;
+  }
+  return out;
+}
+
 const char* kHelp =
     "keys: 1 noaa, 2 msaa 4x, 3 ssaa 8x, 4 ssaa 16x, 5 ssaa 64x, 6 rsaa 8x, 7 rsaa 4x, 8 dcaa, 9 dyncov,\n"
-    "      S/D similarity sadp/depth, A cycle auth 0/1/2, P screenshot, Q or Esc quit\n";
+    "      S/D/G similarity sadp/depth/sadp-plane, A cycle auth 0/1/2, P screenshot, Q or Esc quit\n";
 
 class Viewer {
  public:
@@ -57,13 +82,14 @@ class Viewer {
       case GLFW_KEY_9: o = technique_options("dyncov", 0); break;
       case GLFW_KEY_S: o.similarity = "sadp"; break;
       case GLFW_KEY_D: o.similarity = "depth"; break;
+      case GLFW_KEY_G: o.similarity = "sadp-plane"; break;
       case GLFW_KEY_A: o.auth = (o.auth + 1) % 3; break;
       case GLFW_KEY_P: screenshot(); return true;
       case GLFW_KEY_Q:
       case GLFW_KEY_ESCAPE: return false;
       default: return true;
     }
-    if (o.technique != "rsaa") o.similarity = "sadp", o.auth = 0;
+    if (o.technique != "rsaa") o.similarity = TechniqueOptions().similarity, o.auth = 0;
     options_ = o;
     rebuild();
     return true;
@@ -94,10 +120,9 @@ class Viewer {
         image.at(x, y) = {srgb_to_linear(p[0] / 255.0f), srgb_to_linear(p[1] / 255.0f),
                           srgb_to_linear(p[2] / 255.0f)};
       }
-    char name[512];
-    std::snprintf(name, sizeof name, args_.screenshot.c_str(), ++screenshots_);
+    const std::string name = screenshot_name(args_.screenshot, ++screenshots_);
     write_image(name, image);
-    std::printf("screenshot %s: %s\n", name, technique_label(options_).c_str());
+    std::printf("screenshot %s: %s\n", name.c_str(), technique_label(options_).c_str());
     std::fflush(stdout);
   }
 
@@ -131,6 +156,7 @@ int key_of(char c) {
 int run_view(const ViewArgs& a) {
   validate(a.technique);
   validate_size(a.width, a.height);
+  screenshot_name(a.screenshot, 1);  // refuses a bad pattern before any window opens
   for (char c : a.keys)
     if (c != ' ' && c != ',') key_of(c);
   const Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
@@ -186,7 +212,7 @@ Action add_view_command(CLI::App& app) {
   cmd->add_option("--width", args->width, "Window width")->capture_default_str();
   cmd->add_option("--height", args->height, "Window height")->capture_default_str();
   cmd->add_option("--camera", args->camera, "ex,ey,ez,tx,ty,tz[,fov]");
-  cmd->add_option("--screenshot", args->screenshot, "Screenshot file pattern (printf %d = count)")
+  cmd->add_option("--screenshot", args->screenshot, "Screenshot file pattern: %d = the screenshot's number, %% = '%'")
       ->capture_default_str();
   cmd->add_option("--keys", args->keys,
                   "Press these keys one per frame, then quit (e.g. \"6P2PQ\"); for scripted runs");

@@ -1,11 +1,51 @@
-// rsaa: one executable, one subcommand per job (DESIGN.md section 4).
+// rsaa: one executable, one subcommand per job (docs/conventions.md section 4).
+#include <sys/resource.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <map>
+#include <new>
 #include <string>
+#include <vector>
 
 #include "tools/cli/commands.h"
+
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// The first word names the subcommand; CLI11 would only say that it was not expected.
+int refuse_unknown_command(const CLI::App& app, const std::string& word) {
+  std::string nearest, names;
+  std::size_t best = std::string::npos;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    const std::string& name = sub->get_name();
+    names += (names.empty() ? "" : ", ") + name;
+    const std::size_t d = edit_distance(word, name);
+    if (d < best) best = d, nearest = name;
+  }
+  std::fprintf(stderr, "rsaa: error: unknown command '%s'", word.c_str());
+  if (best <= std::max<std::size_t>(2, nearest.size() / 3)) std::fprintf(stderr, "; did you mean '%s'?", nearest.c_str());
+  std::fprintf(stderr, " (commands: %s; rsaa --help)\n", names.c_str());
+  return 2;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"rsaa: Resampling Anti-Aliasing (Reshetov, HPG 2012): table trainer, renderer and tools"};
@@ -23,7 +63,13 @@ int main(int argc, char** argv) {
   add(rsaa::cli::add_view_command);
   add(rsaa::cli::add_bench_command);
   add(rsaa::cli::add_plot_command);
+  add(rsaa::cli::add_diagnose_command);
 
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->check_name(argv[1]);
+    if (!known) return refuse_unknown_command(app, argv[1]);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -32,6 +78,15 @@ int main(int argc, char** argv) {
   const CLI::App* chosen = app.get_subcommands().front();
   try {
     return actions.at(chosen)();
+  } catch (const std::bad_alloc&) {
+    rlimit limit{};
+    const bool capped = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+    std::fprintf(stderr, "rsaa %s: error: out of memory (%s)\n", chosen->get_name().c_str(),
+                 capped ? ("address space limited to " + std::to_string(limit.rlim_cur >> 20) +
+                           " MiB; fewer --threads or a smaller input may fit").c_str()
+                        : "an input declares more data than fits in the memory available");
+    std::fflush(nullptr);
+    std::_Exit(1);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "rsaa %s: error: %s\n", chosen->get_name().c_str(), e.what());
     std::fflush(nullptr);

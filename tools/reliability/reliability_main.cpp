@@ -41,8 +41,13 @@ int main(int argc, char** argv) {
   std::printf("| --- | --- | --- | --- | --- |\n");
   std::uint64_t failed = 0;
   std::vector<std::string> failures;
-  for (auto suite : suites) {
-    const SuiteResult r = suite(options);
+  std::vector<SuiteResult> results;
+  for (auto suite : suites) results.push_back(suite(options));
+#ifdef RSAA_RELIABILITY_WITH_RUNTIME
+  if (!tables_only)
+    for (SuiteResult& r : hostile_suites(options)) results.push_back(std::move(r));
+#endif
+  for (const SuiteResult& r : results) {
     if (r.inputs == 0) continue;
     std::printf("| %s | %llu | %llu | %llu | %llu |\n", r.what.c_str(),
                 static_cast<unsigned long long>(r.inputs), static_cast<unsigned long long>(r.rejected),

@@ -1,9 +1,5 @@
 // Scene files, image files and command lines: broken inputs must be refused with an error that
 // names them, and whatever loads must be a drawable scene (finite, with triangles).
-#include <unistd.h>
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,27 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kModels = "/usr/share/assimp/models";
-
-class ScratchDir {
- public:
-  ScratchDir() {
-    std::string pattern = (fs::temp_directory_path() / "rsaa-reliability-XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  std::string write(const std::string& name, const std::string& bytes) const {
-    const std::string p = path_ + "/" + name;
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
-  }
-
- private:
-  std::string path_;
-};
 
 Outcome feed_scene(const std::string& path, std::string& detail) {
   try {
@@ -154,7 +129,7 @@ SuiteResult command_line_corpus(const Options& options) {
   const std::vector<std::string> invocations = {
       "", "nonsense", "train", "train --pattern", "train --pattern d3d8x --cases -5",
       "train --pattern d3d8x --cases 1e3", "train --pattern d3d8x --seed x", "train --pattern d3d8x --threads -1",
-      "train --pattern d3d8x --out-dir /no/such/dir", "train --pattern custom-x --positions '2,2'",
+      "train --pattern d3d8x --out-dir /dev/null/dir", "train --pattern custom-x --positions '2,2'",
       "eval-table", "eval-table /no/such.json", "eval-table " + table + " --cases 0",
       "render --out", "render --technique rsaa --auth 9 --out " + out, "render --width -3 --out " + out,
       "render --width 1e9 --out " + out, "render --camera ,,,,, --out " + out,
@@ -162,14 +137,9 @@ SuiteResult command_line_corpus(const Options& options) {
       "compare", "compare a.png", "compare --luma-threshold 2 " + table + " " + table,
   };
   for (const std::string& args : invocations) {
-    const std::string command = options.rsaa_binary + " " + args + " 2>&1";
-    FILE* pipe = ::popen(command.c_str(), "r");
-    std::string output;
-    std::array<char, 4096> buffer;
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
-    const int status = ::pclose(pipe);
-    const bool failed = WIFEXITED(status) && WEXITSTATUS(status) != 0;
+    const RunResult run = run_limited({"/bin/sh", "-c", options.rsaa_binary + " " + args});
+    const std::string& output = run.output;
+    const bool failed = run.exit_code > 0;
     const bool explained = output.find("error") != std::string::npos || output.find("--") != std::string::npos ||
                            output.find("required") != std::string::npos || output.find("Usage") != std::string::npos;
     const bool no_output = !fs::exists(out);

@@ -1,0 +1,168 @@
+// Bounded reads, all-or-nothing multi-file writes, the directory lock, and the names and
+// positions that tables accept (issue 15). Core only: also run under the sanitizers.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "core/atomic_file.h"
+#include "core/offset_table.h"
+#include "core/sample_pattern.h"
+#include "tests/test_util.h"
+
+namespace rsaa {
+namespace {
+
+using test::TempDir;
+
+std::size_t files_in(const std::string& dir) {
+  std::size_t n = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) n += !e.is_directory();
+  return n;
+}
+
+TEST(AtomicFiles, AFailingRenameMidwayRestoresThePreviousSet) {
+  TempDir dir;
+  test::write_text(dir.file("t.json"), "old json");
+  test::write_text(dir.file("t.glsl"), "old glsl");
+  // t.hlsl did not exist before: after the failure it must not exist either.
+  int calls = 0;
+  const RenameFn third_fails = [&](const std::string& from, const std::string& to, std::string& error) {
+    if (++calls == 3) return error = "injected failure", false;
+    return std::rename(from.c_str(), to.c_str()) == 0;
+  };
+  try {
+    write_files_atomically({{dir.file("t.json"), "new json"}, {dir.file("t.glsl"), "new glsl"}, {dir.file("t.hlsl"), "new hlsl"}},
+                           third_fails);
+    FAIL() << "the failing rename was not reported";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("t.hlsl"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("injected failure"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(calls, 3);
+  EXPECT_EQ(test::read_text(dir.file("t.json")), "old json");
+  EXPECT_EQ(test::read_text(dir.file("t.glsl")), "old glsl");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("t.hlsl")));
+  EXPECT_EQ(files_in(dir.path()), 2u) << "temporaries or backups left behind";
+}
+
+TEST(AtomicFiles, TemporariesOfDeadRunsAreRemovedOthersKept) {
+  TempDir dir;
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  waitpid(child, nullptr, 0);  // a PID that no longer runs
+  const std::string dead = dir.file(".t.tmp-" + std::to_string(child) + "-0.json");
+  const std::string live = dir.file(".t.tmp-" + std::to_string(getppid()) + "-0.json");
+  const std::string unrelated = dir.file("notes.tmp-1");
+  for (const auto& p : {dead, live, unrelated}) test::write_text(p, "x");
+  write_file_atomically(dir.file("t.json"), "{}");
+  EXPECT_FALSE(std::filesystem::exists(dead));
+  EXPECT_TRUE(std::filesystem::exists(live));
+  EXPECT_TRUE(std::filesystem::exists(unrelated));
+  EXPECT_EQ(test::read_text(dir.file("t.json")), "{}");
+}
+
+TEST(AtomicFiles, ATargetThatIsNotAFileIsRefusedBeforeAnythingChanges) {
+  TempDir dir;
+  test::write_text(dir.file("t.json"), "old");
+  std::filesystem::create_directories(dir.file("t.glsl/inside"));
+  EXPECT_THROW(write_files_atomically({{dir.file("t.json"), "new"}, {dir.file("t.glsl"), "new"}}), std::runtime_error);
+  EXPECT_EQ(test::read_text(dir.file("t.json")), "old");
+  EXPECT_EQ(files_in(dir.path()), 1u);
+}
+
+TEST(BoundedReads, RefuseFifosDevicesDirectoriesAndOversizedFiles) {
+  TempDir dir;
+  ASSERT_EQ(mkfifo(dir.file("fifo").c_str(), 0600), 0);
+  const auto message = [](const std::string& path, std::uint64_t limit) {
+    try {
+      read_whole_file(path, limit, "table");
+    } catch (const LimitError& e) {
+      return std::string(e.what());
+    }
+    return std::string("not refused");
+  };
+  EXPECT_NE(message(dir.file("fifo"), 1000).find("is a FIFO"), std::string::npos);  // returns at once
+  EXPECT_NE(message("/dev/zero", 1000).find("/dev/zero: table is a character device"), std::string::npos);
+  EXPECT_NE(message(dir.path(), 1000).find("is a directory"), std::string::npos);
+  test::write_text(dir.file("big"), std::string(1001, 'x'));
+  EXPECT_EQ(message(dir.file("big"), 1000), dir.file("big") + ": table is 1001 bytes; the limit is 1000 bytes");
+  EXPECT_EQ(read_whole_file(dir.file("big"), 1001).size(), 1001u);
+  EXPECT_THROW(read_whole_file(dir.file("missing")), std::runtime_error);
+}
+
+TEST(DirectoryLock, ASecondHolderIsRefusedUntilTheFirstLetsGo) {
+  TempDir dir;
+  {
+    const DirectoryLock first(dir.path(), "rsaa train");
+    try {
+      const DirectoryLock second(dir.path(), "rsaa train");
+      FAIL() << "two holders";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(dir.path() + ": another process holds this directory for rsaa train"),
+                std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(DirectoryLock(dir.path(), "rsaa train"));
+}
+
+TEST(TableNames, OnlyLettersDigitsDashAndUnderscore) {
+  EXPECT_TRUE(is_valid_pattern_name("custom-my_pattern2"));
+  for (const std::string& bad : std::vector<std::string>{"", "custom-../x", "custom-a/b", "custom-a\nb", "custom-a b", "custom-\xc3\xa9",
+                                std::string(65, 'a')})
+    EXPECT_FALSE(is_valid_pattern_name(bad)) << bad;
+  EXPECT_FALSE(is_known_pattern_name("custom-../../x"));
+  EXPECT_FALSE(is_known_pattern_name("custom-"));
+  EXPECT_THROW(pattern_from_positions("custom-a\n#error", {{0.25, 0.25}}), std::invalid_argument);
+
+  TempDir dir;
+  const OffsetTable table = fallback_table(builtin_pattern("d3d4x"));
+  EXPECT_THROW(write_offset_table_files(table, dir.path(), "../escaped"), std::invalid_argument);
+  EXPECT_THROW(write_offset_table_files(table, dir.path(), "a\nb"), std::invalid_argument);
+  EXPECT_EQ(files_in(dir.path()), 0u);
+}
+
+TEST(TableNames, TheTrainingCommandCannotAddLinesToShaderCode) {
+  OffsetTable table = fallback_table(builtin_pattern("d3d4x"));
+  table.training["command"] = "rsaa train --from-scene 'a\n#error injected\r'";
+  for (const std::string& text : {offset_table_glsl(table), offset_table_hlsl(table)}) {
+    EXPECT_EQ(text.find("\n#error"), std::string::npos);
+    EXPECT_NE(text.find("a\\x0a#error injected\\x0d"), std::string::npos);
+  }
+}
+
+TEST(TableFiles, NonFiniteOrOutOfRangeOffsetsAreNeverWritten) {
+  TempDir dir;
+  OffsetTable table = fallback_table(builtin_pattern("d3d4x"));
+  table.offsets[3].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(write_offset_table_files(table, dir.path()), std::invalid_argument);
+  table.offsets[3].x = 1.5;
+  EXPECT_THROW(write_offset_table_files(table, dir.path()), std::invalid_argument);
+  EXPECT_EQ(files_in(dir.path()), 0u);
+}
+
+TEST(SamplePatterns, DegeneratePositionsAreRefused) {
+  const double subnormal = std::numeric_limits<double>::denorm_min();
+  EXPECT_THROW(pattern_from_positions("custom-s", {{subnormal, 0.25}, {0.25, -0.25}}), std::invalid_argument);
+  EXPECT_THROW(pattern_from_positions("custom-s", {{1e-300, 0.25}}), std::invalid_argument);
+  EXPECT_THROW(pattern_from_positions("custom-c", {{0.25, 0.25}, {0.25, 0.25 + 1e-9}}), std::invalid_argument);
+  EXPECT_NO_THROW(pattern_from_positions("custom-ok", {{0.0, 0.25}, {0.25, 0.0}, {-0.5, 0.5}}));
+  // The reader refuses them too, naming the file.
+  const OffsetTable ok = fallback_table(pattern_from_positions("custom-s", {{0.125, 0.25}, {0.25, -0.25}}));
+  std::string text = offset_table_json(ok);
+  text.replace(text.find("[0.125, 0.25]"), 13, "[5e-324, 0.25]");
+  try {
+    parse_offset_table(text, "sub.json");
+    FAIL() << "a subnormal sample position was accepted";
+  } catch (const TableError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("sub.json: samples: ", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rsaa

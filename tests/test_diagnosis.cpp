@@ -1,0 +1,89 @@
+// rsaa diagnose: the pixel classes and the oracle on hand-made inputs, the surface grouping on
+// built-in geometry, and the command on a tiny image.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "runtime/scene.h"
+#include "tests/test_util.h"
+#include "tools/bench/diagnosis.h"
+
+namespace rsaa {
+namespace {
+
+TEST(Diagnosis, SmoothSurfacesGroupATessellatedSphereAndSplitABox) {
+  const Scene scene = load_scene("builtin:grazing");
+  const std::vector<std::uint32_t> ids = smooth_surface_ids(scene);
+  ASSERT_EQ(ids.size(), scene.triangle_count());
+  // The floor quad (2 triangles) is one surface; the red sphere (the next 24 x 48 x 2 - 96
+  // triangles) is one surface; the blue box after the three spheres has six.
+  EXPECT_EQ(ids[0], ids[1]);
+  const std::size_t sphere_begin = 2, sphere_end = sphere_begin + 24 * 48 * 2 - 2 * 48;
+  for (std::size_t t = sphere_begin; t < sphere_end; ++t) ASSERT_EQ(ids[t], ids[sphere_begin]) << t;
+  EXPECT_NE(ids[sphere_begin], ids[0]);
+}
+
+// A 3x3 image: a vertical edge between a white left column and black rest. The centre pixel sees
+// both surfaces; RSAA resampled it with a one-line offset.
+TEST(Diagnosis, ClassesOracleAndTable) {
+  const SamplePattern pattern = builtin_pattern("d3d8x");
+  OffsetTable table = fallback_table(pattern);
+  DiagnosisInputs in;
+  in.noaa = Image(3, 3);
+  in.reference = Image(3, 3);
+  for (int y = 0; y < 3; ++y) {
+    in.noaa.at(0, y) = {1, 1, 1};
+    in.reference.at(0, y) = {1, 1, 1};
+    in.reference.at(1, y) = {0.25f, 0.25f, 0.25f};  // a quarter of the centre column is white
+  }
+  in.rsaa = in.noaa;
+  in.masks.assign(9, full_mask(8));
+  const Mask edge_mask = full_mask(8) & ~Mask{0x01};
+  in.masks[4] = edge_mask;
+  table.sources[edge_mask] = OffsetSource::OneLine;
+  in.table = &table;
+  in.surfaces.resize(9);
+  in.centre_surface.assign(9, 2);
+  in.subsample_sees_other.assign(9, 0);
+  for (int y = 0; y < 3; ++y) {
+    in.centre_surface[y * 3] = 1;
+    in.surfaces[y * 3] = {{1}, 1};
+    in.surfaces[y * 3 + 1] = {{2, 1}, 2};
+    in.surfaces[y * 3 + 2] = {{2}, 1};
+  }
+  in.subsample_sees_other[1] = 1;  // top middle: seen by a subsample, yet left alone
+  const Diagnosis d = diagnose(in);
+  EXPECT_EQ(d.pixel_class[4], DiagnosisClass::TwoSurfacesOneLine);
+  EXPECT_EQ(d.pixel_class[1], DiagnosisClass::Missed);
+  EXPECT_EQ(d.pixel_class[7], DiagnosisClass::Unsampled);
+  EXPECT_EQ(d.pixel_class[0], DiagnosisClass::OneSurfaceUntouched);
+  EXPECT_EQ(d.rows[int(DiagnosisClass::OneSurfaceUntouched)].pixels, 6u);
+  // The oracle fetches a quarter of white: within a few 8-bit steps of the reference.
+  EXPECT_LT(d.rows[int(DiagnosisClass::TwoSurfacesOneLine)].oracle_error, 4.0);
+  EXPECT_GT(d.rows[int(DiagnosisClass::TwoSurfacesOneLine)].noaa_error, 1000.0);
+  EXPECT_GT(d.oracle_psnr, d.noaa_psnr + 20.0);
+  const std::string md = diagnosis_markdown(d, "test");
+  EXPECT_NE(md.find("2 surfaces, one-line offset | 1 |"), std::string::npos) << md;
+  in.masks[4] = Mask{1} << 9;  // does not fit 8 samples
+  EXPECT_THROW(diagnose(in), std::invalid_argument);
+}
+
+TEST(Diagnosis, CommandWritesTheTableAndPictures) {
+  using test::TempDir;
+  using test::run_rsaa;
+  TempDir dir;
+  const auto r = run_rsaa("diagnose --scene builtin:edges --width 64 --height 48 --surface-samples 2 --out-dir " +
+                          dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("best single fetch (oracle)"), std::string::npos) << r.output;
+  for (const char* f : {"diagnosis.md", "error_map.png", "oracle.png", "rsaa.png", "noaa.png", "reference.png"})
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir.path()) / f)) << f;
+  const auto bad = run_rsaa("diagnose --technique msaa --out-dir " + dir.path());
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.output.find("rsaa"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace rsaa

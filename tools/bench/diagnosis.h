@@ -1,0 +1,89 @@
+// Where RSAA's image error lives: its squared error against the reference split by pixel class
+// (how many surfaces the reference sees in the pixel, which rule made the mask's offset, missed
+// edges, neighbourhoods without a pure colour of the other surface), beside the error of no AA
+// and of the best single bilinear fetch (the oracle bound of any offset table). CPU only: the
+// GL side (rsaa diagnose) gathers the inputs.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "core/mask.h"
+#include "core/offset_table.h"
+#include "runtime/scene.h"
+
+namespace rsaa {
+
+// Surfaces seen in one pixel: ids of distinct surfaces (0 = background), most samples first.
+struct PixelSurfaces {
+  static constexpr int kMaxKept = 4;
+  std::array<std::uint32_t, kMaxKept> ids{};
+  int count = 0;  // distinct surfaces seen, may exceed kMaxKept
+};
+
+struct DiagnosisInputs {
+  Image noaa, rsaa, reference;          // linear, same size
+  Image baseline;                       // optional (empty: none): a technique to compare with
+  std::vector<Mask> masks;              // RSAA's mask per pixel (all-similar: left alone)
+  std::vector<PixelSurfaces> surfaces;  // from a supersampled surface-id pass
+  std::vector<std::uint32_t> centre_surface;  // the surface at each pixel centre (1x)
+  // Per pixel: 1 if a subsample of RSAA's pattern sees another surface than the centre.
+  std::vector<std::uint8_t> subsample_sees_other;
+  const OffsetTable* table = nullptr;   // for the rule behind each mask's offset
+};
+
+enum class DiagnosisClass : std::uint8_t {
+  OneSurfaceUntouched,  // interior pixels: shading/texture aliasing, RSAA leaves them alone
+  OneSurfaceResampled,  // a false edge: RSAA moved a pixel the reference sees as one surface
+  Unsampled,            // 2+ surfaces, but no subsample of the pattern sees another one
+  Missed,               // 2+ surfaces, a subsample sees another, yet the mask is all-similar
+  NoOtherColour,        // 2+ surfaces, no neighbour centre shows another surface of the pixel
+  TwoSurfacesOneLine,   // 2 surfaces, offset fitted on one-line cases
+  TwoSurfacesTwoLine,
+  TwoSurfacesFallback,  // 2 surfaces, the fallback rule (or a scene-fitted offset)
+  ThreeSurfaces,        // 3+ surfaces, resampled
+};
+constexpr int kDiagnosisClassCount = 9;
+const char* to_string(DiagnosisClass c);
+
+struct DiagnosisRow {
+  std::string name;
+  std::size_t pixels = 0;
+  double rsaa_error = 0.0;    // summed squared error, 8-bit sRGB units, mean of RGB
+  double noaa_error = 0.0;
+  double oracle_error = 0.0;  // best single bilinear fetch within [-1, 1]^2
+  double baseline_error = 0.0;
+};
+
+struct Diagnosis {
+  int width = 0, height = 0;
+  std::vector<DiagnosisRow> rows;              // one per DiagnosisClass
+  std::vector<DiagnosisClass> pixel_class;     // per pixel
+  std::vector<float> rsaa_error;               // per pixel squared error
+  double rsaa_psnr = 0.0, noaa_psnr = 0.0, oracle_psnr = 0.0, baseline_psnr = 0.0;
+  bool has_baseline = false;
+  Image oracle;                                // the oracle image
+};
+
+// A surface id per triangle (1-based): triangles of one draw range that share an edge (welded by
+// position) and whose face normals differ by less than 30 degrees belong to one surface, so a
+// tessellated sphere is one surface and a box has six. Degenerate triangles are surfaces alone.
+std::vector<std::uint32_t> smooth_surface_ids(const Scene& scene);
+
+// Throws std::invalid_argument when sizes disagree or the table is missing.
+Diagnosis diagnose(const DiagnosisInputs& in);
+
+// Markdown table of the rows (pixels, share of RSAA's error, PSNR-equivalent figures).
+std::string diagnosis_markdown(const Diagnosis& d, const std::string& title,
+                               const std::string& baseline_name = "baseline");
+
+// The error map: brightness = sqrt of RSAA's error, hue = the pixel's class (legend in the
+// Markdown); 8-bit sRGB RGB, top row first.
+std::vector<std::uint8_t> diagnosis_picture(const Diagnosis& d);
+// The class colours, in DiagnosisClass order (sRGB 8-bit).
+const std::array<std::array<std::uint8_t, 3>, kDiagnosisClassCount>& diagnosis_class_colours();
+
+}  // namespace rsaa
