@@ -42,6 +42,19 @@ DcaaPixel::DcaaPixel(DcaaSettings settings, const SamplePattern* coverage_patter
     throw std::invalid_argument("DcaaPixel: per-sample visibility needs the coverage pattern");
 }
 
+DcaaSettings dcaa_settings(const std::string& rules) {
+  DcaaSettings s;
+  if (rules == "paper") return s;
+  if (rules != "surface") throw std::invalid_argument("dcaa --rules must be paper or surface, not '" + rules + "'");
+  s.per_sample_visibility = true;
+  s.merge_hidden = false;
+  s.merge_disjoint_only = true;
+  // Into the most overlapping surface only: measured +0.1 dB on the engine, +0.4 on distant boxes,
+  // equal elsewhere, against into every overlapping one.
+  s.second_merge_into_all = false;
+  return s;
+}
+
 DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b) {
   const float wa = float(similar_count(a.coverage)), wb = float(similar_count(b.coverage));
   const float sum = wa + wb;
@@ -111,9 +124,11 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
   for (int i = 0; i < n && (settings_.merge_hidden || smallest_visible > 0); ++i) {
     if (i == smallest || !depth_intervals_overlap(candidates[i].depth, candidates[smallest].depth)) continue;
     const float overlap = depth_overlap_amount(candidates[i].depth, candidates[smallest].depth);
-    if (target < 0 || overlap > target_overlap) target = i, target_overlap = overlap;
+    if (settings_.second_merge_into_all) candidates[i] = merge_surfaces(candidates[i], candidates[smallest]), target = i;
+    else if (target < 0 || overlap > target_overlap) target = i, target_overlap = overlap;
   }
-  if (target >= 0) candidates[target] = merge_surfaces(candidates[target], candidates[smallest]);
+  if (target >= 0 && !settings_.second_merge_into_all)
+    candidates[target] = merge_surfaces(candidates[target], candidates[smallest]);
   surfaces_.clear();
   for (int i = 0; i < n; ++i)
     if (i != smallest) surfaces_.push_back(candidates[i]);

@@ -5,6 +5,7 @@
 // implements the same rules; this is the oracle its tests compare against.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/coverage_fragment.h"
@@ -28,6 +29,9 @@ struct DcaaSettings {
   // tessellated surface never cover a sample twice, two layers crossing at a small angle do
   // (the paper's normal and depth tests alone merge them; its Fig. 10(b)). false: the paper.
   bool merge_disjoint_only = false;
+  // Second merge into every surface whose depth interval overlaps the least visible one, as
+  // Algorithm 1 writes it (true), or only into the one that overlaps it most (false).
+  bool second_merge_into_all = true;
 };
 
 struct DcaaSurface {
@@ -36,6 +40,13 @@ struct DcaaSurface {
   Normal3 normal;
   Rgb colour;
 };
+
+// `dcaa --rules`: "paper" = Algorithm 1 as written (DcaaSettings{}); "surface" (the default) =
+// the answers dynamic coverage's surface rules give to the same questions (core/dynamic_coverage.h):
+// first merge only between disjoint coverage, second merge choosing by per-sample visibility,
+// dropping hidden surfaces and merging into the most overlapping surface only. Throws
+// std::invalid_argument for another name.
+DcaaSettings dcaa_settings(const std::string& rules);
 
 // Merge(a, b) of the paper: normals, depth planes and colours averaged weighted by coverage
 // counts (the normal renormalised), coverage ORed. Returns the merged surface.

@@ -14,11 +14,8 @@ Rgb operator+(Rgb a, Rgb b) { return {a.r + b.r, a.g + b.g, a.b + b.b}; }
 }  // namespace
 
 DcaaSettings dynamic_coverage_surface_settings() {
-  DcaaSettings s;
+  DcaaSettings s = dcaa_settings("surface");
   s.max_surfaces = 2;
-  s.per_sample_visibility = true;
-  s.merge_hidden = false;
-  s.merge_disjoint_only = true;
   return s;
 }
 

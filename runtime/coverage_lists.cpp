@@ -82,6 +82,36 @@ void CoverageFragmentLists::allocate_records(std::size_t capacity) {
   capacity_ = capacity;
 }
 
+void CoverageFragmentLists::enable_z_prepass() {
+  prepass_depth_ = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width_, height_, 4);
+  prepass_target_ = gl::make_framebuffer({}, {prepass_depth_.get()});
+  max_depth_ = gl::make_texture_2d(GL_R32F, width_, height_);
+  max_depth_target_ = gl::make_framebuffer({{max_depth_.get()}});
+  max_depth_program_ = make_fullscreen_program("coverage_max_depth.frag", "");
+  depth_renderer_.emplace();
+  const GLuint p = program_.get();
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_max_depth"), 3);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_z_prepass"), 1);
+  glProgramUniform1i(max_depth_program_.get(), glGetUniformLocation(max_depth_program_.get(), "u_depth"), 3);
+  gl::check("coverage lists: z-prepass setup");
+}
+
+void CoverageFragmentLists::z_prepass(const GpuScene& scene, const View& view) {
+  const GLfloat far = 1.0f;
+  glClearNamedFramebufferfv(prepass_target_.get(), GL_DEPTH, 0, &far);
+  glBindFramebuffer(GL_FRAMEBUFFER, prepass_target_.get());
+  glEnable(GL_MULTISAMPLE);
+  SceneRenderer::draw(scene, view, {0.0f, 0.0f}, depth_renderer_->shade_program());
+  glBindFramebuffer(GL_FRAMEBUFFER, max_depth_target_.get());
+  glViewport(0, 0, view.width, view.height);
+  glDisable(GL_DEPTH_TEST);
+  glBindTextureUnit(3, prepass_depth_.get());
+  glUseProgram(max_depth_program_.get());
+  draw_fullscreen_triangle();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl::check("coverage lists: z-prepass");
+}
+
 std::size_t CoverageFragmentLists::build(const GpuScene& scene, const View& view) {
   for (int attempt = 0;; ++attempt) {
     const std::uint32_t end = kListEnd;
@@ -92,6 +122,7 @@ std::size_t CoverageFragmentLists::build(const GpuScene& scene, const View& view
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, records_.get());
     glBindImageTexture(0, heads_.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glBindTextureUnit(1, lut_texture_.get());
+    if (z_prepass_enabled()) glBindTextureUnit(3, max_depth_.get());
     glBindFramebuffer(GL_FRAMEBUFFER, empty_target_.get());
     glProgramUniform2f(program_.get(), glGetUniformLocation(program_.get(), "u_viewport"), float(view.width),
                        float(view.height));
@@ -149,11 +180,18 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
 }
 
 CoverageListTechnique::CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define,
-                                             int width, int height)
+                                             int width, int height, bool z_prepass)
     : lists_(coverage_pattern, width, height),
-      resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")) {}
+      resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")) {
+  if (z_prepass) lists_.enable_z_prepass();
+}
 
 void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLuint output) {
+  if (lists_.z_prepass_enabled()) {
+    timer_.begin("z-prepass");
+    lists_.z_prepass(scene, view);
+    timer_.end();
+  }
   timer_.begin("main");
   lists_.build(scene, view);
   timer_.end();

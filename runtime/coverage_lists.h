@@ -8,12 +8,14 @@
 // merge: every fragment is stored, then sorted.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/coverage_fragment.h"
 #include "core/halfplane_lut.h"
 #include "runtime/gl_objects.h"
 #include "runtime/gpu_scene.h"
+#include "runtime/scene_renderer.h"
 #include "runtime/technique.h"
 
 namespace rsaa {
@@ -25,6 +27,12 @@ class CoverageFragmentLists {
   // `coverage_pattern`: the coverage samples of the technique (64 for DCAA, 16 for dynamic
   // coverage), whose half-plane LUT the geometry pass uses.
   CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height);
+
+  // From now on build() stores only fragments not behind the farthest of the pixel's 4 hardware
+  // MSAA depths, which z_prepass() draws (DCAA's section 4.2 with 4 samples; llvmpipe has no 8).
+  void enable_z_prepass();
+  bool z_prepass_enabled() const { return bool(max_depth_.get()); }
+  void z_prepass(const GpuScene& scene, const View& view);
 
   // Draws the scene into the lists; grows the record buffer and draws again when it overflowed.
   // Returns the number of fragments stored.
@@ -52,6 +60,11 @@ class CoverageFragmentLists {
   gl::Buffer counter_, records_;
   gl::Framebuffer empty_target_;
   std::size_t capacity_ = 0, fragments_ = 0;
+  // z-prepass (enable_z_prepass)
+  gl::Texture prepass_depth_, max_depth_;
+  gl::Framebuffer prepass_target_, max_depth_target_;
+  gl::Program max_depth_program_;
+  std::optional<SceneRenderer> depth_renderer_;
 };
 
 // A coverage technique: the lists, then `resolve_define`'s variant of coverage_resolve.frag
@@ -60,7 +73,7 @@ class CoverageFragmentLists {
 class CoverageListTechnique : public Technique {
  public:
   CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define, int width,
-                        int height);
+                        int height, bool z_prepass = false);
   void render(const GpuScene& scene, const View& view, GLuint output) override;
   double bytes_per_pixel() const override { return lists_.bytes_per_pixel(); }
   CoverageFragmentLists* coverage_lists() override { return &lists_; }

@@ -50,6 +50,7 @@ void validate(const TechniqueOptions& o) {
     if (o.samples > 1) bad(o.technique + " takes no --samples");
   } else if (o.technique == "dcaa") {
     if (o.samples != 0 && o.samples != 64) bad("dcaa always uses 64 coverage samples");
+    dcaa_settings(o.rules);
   } else if (o.technique == "agaa") {
     const int n = samples_or(o, 8);
     if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
@@ -97,8 +98,11 @@ void validate(const TechniqueOptions& o) {
 }
 
 std::string technique_label(const TechniqueOptions& o) {
-  if (o.technique == "dyncov") return o.rules == TechniqueOptions{}.rules ? "dyncov" : "dyncov " + o.rules;
-  if (o.technique == "noaa" || o.technique == "fxaa" || o.technique == "dcaa") return o.technique;
+  if (o.technique == "dyncov")
+    return std::string("dyncov") + (o.rules == TechniqueOptions{}.rules ? "" : " " + o.rules) + (o.z_prepass ? " zpre" : "");
+  if (o.technique == "dcaa")
+    return std::string("dcaa") + (o.rules == TechniqueOptions{}.rules ? "" : " " + o.rules) + (o.z_prepass ? " zpre" : "");
+  if (o.technique == "noaa" || o.technique == "fxaa") return o.technique;
   if (o.technique == "msaa") return "msaa " + std::to_string(samples_or(o, 4)) + "x";
   if (o.technique == "ssaa") return "ssaa " + std::to_string(samples_or(o, 64)) + "x";
   if (o.technique == "ssaa-filtered") return "ssaa-filtered k" + std::to_string(o.kernel);
@@ -127,8 +131,8 @@ std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, 
   validate(o);
   if (o.technique == "noaa") return make_noaa(width, height);
   if (o.technique == "fxaa") return make_fxaa(width, height);
-  if (o.technique == "dcaa") return make_dcaa(width, height);
-  if (o.technique == "dyncov") return make_dynamic_coverage(dynamic_coverage_rules(o.rules), width, height);
+  if (o.technique == "dcaa") return make_dcaa(dcaa_settings(o.rules), o.z_prepass, width, height);
+  if (o.technique == "dyncov") return make_dynamic_coverage(dynamic_coverage_rules(o.rules), o.z_prepass, width, height);
   if (o.technique == "agaa") {
     AgaaSettings s;
     s.k = float(o.agaa_k);

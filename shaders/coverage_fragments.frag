@@ -17,6 +17,8 @@ in CoverageTriangle {
 uniform usampler2D u_halfplane_lut;
 uniform uvec2 u_full_mask;  // the coverage pattern's samples
 layout(r32ui) uniform coherent uimage2D u_heads;
+uniform bool u_z_prepass;         // coverage_max_depth.frag's result is bound
+uniform sampler2D u_max_depth;    // farthest visible depth of the pixel (window depth)
 
 // Octahedral encoding of a unit vector in 2 x 16 bits.
 uint encode_unit_vector(vec3 n) {
@@ -44,6 +46,10 @@ void main() {
     plane = vec3(gl_FragCoord.z, 0.0, 0.0);
   }
   if (coverage == uvec2(0u)) discard;
+  // Behind everything the z-prepass saw in this pixel (the tolerance covers the difference
+  // between the rasteriser's depth and our plane's).
+  if (u_z_prepass && plane.x - 0.5 * (abs(plane.y) + abs(plane.z)) > texelFetch(u_max_depth, ivec2(c), 0).x + 1e-6)
+    discard;
   vec3 colour = shade_scene_fragment().rgb;
   if (any(isnan(colour)) || any(isinf(colour)) || any(isnan(plane)) || any(isinf(plane))) discard;
 

@@ -19,6 +19,7 @@ uniform float u_cos_normal_threshold;
 uniform bool u_per_sample_visibility;  // DcaaSettings::per_sample_visibility
 uniform bool u_merge_hidden;           // DcaaSettings::merge_hidden
 uniform bool u_merge_disjoint_only;    // DcaaSettings::merge_disjoint_only
+uniform bool u_second_merge_into_all;  // DcaaSettings::second_merge_into_all
 uniform int u_coverage_sample_count;
 uniform vec2 u_coverage_samples[64];  // pixel space, y down
 #ifndef DCAA_MAX_SURFACES
@@ -150,12 +151,15 @@ void insert_fragment(CoverageRecord r) {
   for (int i = 0; i < n && (u_merge_hidden || smallest_visible > 0); ++i) {
     if (i == smallest || !overlaps(s_depth[i], s_depth[smallest])) continue;
     float ov = overlap_amount(s_depth[i], s_depth[smallest]);
-    if (target < 0 || ov > target_overlap) {
+    if (u_second_merge_into_all) {
+      merge_into(i, smallest);
+      target = i;
+    } else if (target < 0 || ov > target_overlap) {
       target = i;
       target_overlap = ov;
     }
   }
-  if (target >= 0) merge_into(target, smallest);
+  if (target >= 0 && !u_second_merge_into_all) merge_into(target, smallest);
   for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
 }
 

@@ -61,8 +61,8 @@ TEST(Dcaa, BestCandidateHasTheClosestNormal) {
 }
 
 // Four surfaces at clearly separate depths with normals far apart: the list is full.
-DcaaPixel full_pixel() {
-  DcaaPixel pixel;
+DcaaPixel full_pixel(DcaaSettings settings = {}) {
+  DcaaPixel pixel(settings);
   pixel.insert(fragment(0, 0x0000'0000'0000'FFFFull, 0.1f, 0.0f, {1, 0, 0}));       // front-most, 16 bits
   pixel.insert(fragment(1, 0x0000'0000'FFFF'0000ull, 0.3f, 0.5f, {0, 1, 0}));       // 16 visible
   pixel.insert(fragment(2, 0x0000'00FF'0000'0000ull, 0.5f, 1.0f, {0, 0, 1}, 0.6f));  // 8 visible, wide depth range
@@ -74,11 +74,21 @@ TEST(Dcaa, FullListMergesTheSmallestVisibleSurfaceIntoAnOverlappingOne) {
   DcaaPixel pixel = full_pixel();
   ASSERT_EQ(pixel.surfaces().size(), 4u);
   // A fifth fragment in front of all: it is the front-most, so the smallest visible is surface
-  // 2 (8 bits), whose depth interval [0.2, 0.8] touches surfaces 1 and 3: merged, not lost.
+  // 2 (8 bits), whose depth interval [0.2, 0.8] touches surfaces 1 and 3: merged, not lost,
+  // into both, as Algorithm 1 writes it (lines 13-17).
   const CoverageFragment fifth = fragment(4, 0xFull, 0.05f, 2.0f, {1, 1, 1});
   EXPECT_EQ(pixel.insert(fifth), DcaaEvent::SecondMerge);
   ASSERT_EQ(pixel.surfaces().size(), 4u);
   EXPECT_EQ(pixel.surfaces()[1].coverage, 0x0000'00FF'FFFF'0000ull);  // surface 1 took surface 2
+  EXPECT_EQ(pixel.surfaces()[2].coverage, 0xFFFF'FFFF'0000'0000ull);  // and so did surface 3
+  // Merging into the best overlapping surface only (second_merge_into_all = false): surface 1,
+  // whose interval overlaps surface 2's most; surface 3 is left as it was.
+  DcaaSettings single;
+  single.second_merge_into_all = false;
+  DcaaPixel one = full_pixel(single);
+  one.insert(fifth);
+  EXPECT_EQ(one.surfaces()[1].coverage, 0x0000'00FF'FFFF'0000ull);
+  EXPECT_EQ(one.surfaces()[2].coverage, 0xFFFF'FF00'0000'0000ull);
   EXPECT_EQ(pixel.surfaces().back().coverage, fifth.coverage);          // the fragment got a slot
   Mask all = 0;
   for (const DcaaSurface& s : pixel.surfaces()) all |= s.coverage;

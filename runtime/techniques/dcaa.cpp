@@ -1,6 +1,7 @@
-// dcaa: Decoupled Coverage Anti-Aliasing (seed 000) on the shared fragment lists: 64 coverage
-// samples from the half-plane LUT, at most 4 surfaces per pixel merged by the paper's rules, per
-// sample depth resolve. The rules are those of core/dcaa.h (the tests' oracle).
+// dcaa [--rules surface|paper]: Decoupled Coverage Anti-Aliasing (seed 000) on the shared
+// fragment lists: 64 coverage samples from the half-plane LUT, at most 4 surfaces per pixel
+// merged by Algorithm 1 (paper) or with the surface rules, per sample depth resolve. The rules
+// are those of core/dcaa.h (the tests' oracle).
 #include "core/dcaa.h"
 #include "runtime/coverage_lists.h"
 #include "runtime/techniques/techniques.h"
@@ -16,11 +17,12 @@ void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const Dca
   glProgramUniform1i(p, glGetUniformLocation(p, "u_per_sample_visibility"), settings.per_sample_visibility);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_hidden"), settings.merge_hidden);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_disjoint_only"), settings.merge_disjoint_only);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_into_all"), settings.second_merge_into_all);
 }
 
-std::unique_ptr<Technique> make_dcaa(int width, int height) {
-  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height);
-  configure_surface_resolve(t->resolve_program(), t->coverage_lists()->lut().pattern(), DcaaSettings{});
+std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, int width, int height) {
+  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height, z_prepass);
+  configure_surface_resolve(t->resolve_program(), t->coverage_lists()->lut().pattern(), settings);
   return t;
 }
 

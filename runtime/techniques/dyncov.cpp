@@ -8,13 +8,14 @@
 
 namespace rsaa {
 
-std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, int width, int height) {
+std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, bool z_prepass, int width, int height) {
   if (rules == DynamicCoverageRules::Seed)
-    return std::make_unique<CoverageListTechnique>(dynamic_coverage_pattern(), "COVERAGE_DYNCOV_SEED", width, height);
+    return std::make_unique<CoverageListTechnique>(dynamic_coverage_pattern(), "COVERAGE_DYNCOV_SEED", width, height,
+                                                   z_prepass);
   const DcaaSettings settings = dynamic_coverage_surface_settings();
   auto t = std::make_unique<CoverageListTechnique>(
       dynamic_coverage_pattern(), "COVERAGE_DCAA\n#define DCAA_MAX_SURFACES " + std::to_string(settings.max_surfaces),
-      width, height);
+      width, height, z_prepass);
   configure_surface_resolve(t->resolve_program(), dynamic_coverage_pattern(), settings);
   return t;
 }

@@ -19,8 +19,9 @@ std::unique_ptr<Technique> make_fxaa(int width, int height);
 // Draws at 2W x 2H into its own RGBA16F target, then downsamples with kernel 1, 2 or 3.
 std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height);
 // Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
-std::unique_ptr<Technique> make_dcaa(int width, int height);
-std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, int width, int height);
+// z_prepass: CoverageFragmentLists::enable_z_prepass().
+std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, int width, int height);
+std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, bool z_prepass, int width, int height);
 // Sets the uniforms of coverage_resolve.frag's COVERAGE_DCAA variant: coverage samples and the
 // DcaaSettings (dcaa, and dyncov's surface rules).
 void configure_surface_resolve(GLuint program, const SamplePattern& pattern, const DcaaSettings& settings);

@@ -41,6 +41,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "agaa: characteristic length of the clustering distance in scene units (the paper: 10 cm); "
                   "0 (default): relative, --agaa-k-pixels")
       ->capture_default_str();
+  cmd->add_flag("--z-prepass", o.z_prepass,
+                "dcaa, dyncov: cull fragments behind the farthest of 4 hardware MSAA depths (DCAA's section 4.2)");
   cmd->add_option("--agaa-diffuse", o.agaa_diffuse,
                   "agaa: filtered (Lambert term scaled by the aggregate's mean normal length) | plain")
       ->capture_default_str();
@@ -49,8 +51,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "agaa: characteristic length in pixel footprints at the surface (independent of the units)")
       ->capture_default_str();
   cmd->add_option("--rules", o.rules,
-                  "dyncov: surface (merge fragments of one surface, background on uncovered samples) | seed "
-                  "(the seed's rules as written)")
+                  "dyncov: surface (merge fragments of one surface, per-sample visibility) | seed (the seed's "
+                  "rules as written); dcaa: surface | paper (Algorithm 1 as written)")
       ->capture_default_str();
 }
 
