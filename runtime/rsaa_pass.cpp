@@ -24,8 +24,10 @@ struct RsaaTargets::Objects {
 };
 
 struct RsaaPass::Objects {
-  std::vector<gl::Texture> codes;  // four subsamples per texel (RGBA), ceil(n / 4) textures
+  std::vector<gl::Texture> codes;  // jittered: four subsamples per texel (RGBA), ceil(n / 4) textures
   gl::Texture subsample_depth, table;
+  gl::Texture codes_ms, depth_ms;  // multisample pre-pass: sample i = subsample i
+  gl::Framebuffer multisample_target;
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Program subsample_program, post_program;
   gl::CachedFramebuffer resolve_target;
@@ -80,6 +82,29 @@ gl::Texture table_texture(const OffsetTable& table) {
   gl::Texture texture = gl::make_texture_2d(GL_RGBA32F, width, height);
   glTextureSubImage2D(texture.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
   return texture;
+}
+
+// Whether the driver can run the pre-pass as one multisample draw for `pattern`: it offers that
+// many samples for integer targets, and its positions for that count are the pattern's.
+bool driver_samples_pattern(const SamplePattern& pattern) {
+  GLint max_samples = 0, max_integer_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
+  const int n = pattern.size();
+  if (n < 2 || n > max_samples || n > max_integer_samples) return false;
+  const SamplePattern driver = query_gl_sample_pattern(n);
+  for (int i = 0; i < n; ++i)
+    if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
+  return true;
+}
+
+GLenum single_code_format(int bits) {
+  switch (bits) {
+    case 8: return GL_R8UI;
+    case 16: return GL_R16UI;
+    case 32: return GL_R32UI;
+  }
+  throw std::invalid_argument("RSAA code bits must be 8, 16 or 32, not " + std::to_string(bits));
 }
 
 GLenum code_format(int bits) {
@@ -182,16 +207,29 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   gl_->table = table_texture(table);
 
   const int n = pattern_.size();
-  gl_->subsample_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
-  for (int k = 0; k < (n + 3) / 4; ++k) {
-    gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
-    gl_->subsample_targets.push_back(
-        gl::make_framebuffer({{gl_->codes.back().get()}}, {gl_->subsample_depth.get()}));
+  if (settings.prepass != "jittered" && settings.prepass != "msaa")
+    throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
+  multisample_ = settings.prepass == "msaa" && driver_samples_pattern(pattern_);
+  if (settings.prepass == "msaa" && !multisample_)
+    throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
+                                "-sample integer target at the positions of pattern '" + pattern_.name + "'");
+  if (multisample_) {
+    gl_->codes_ms = gl::make_texture_2d_multisample(single_code_format(settings.code_bits), width, height, n);
+    gl_->depth_ms = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, n);
+    gl_->multisample_target = gl::make_framebuffer({{gl_->codes_ms.get()}}, {gl_->depth_ms.get()});
+  } else {
+    gl_->subsample_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
+    for (int k = 0; k < (n + 3) / 4; ++k) {
+      gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
+      gl_->subsample_targets.push_back(
+          gl::make_framebuffer({{gl_->codes.back().get()}}, {gl_->subsample_depth.get()}));
+    }
   }
 
   std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(n) + "\n" +
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
                         "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n";
+  if (multisample_) defines += "#define RSAA_PREPASS_MSAA\n";
   if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
   else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
   else if (settings.similarity != "sadp")
@@ -209,6 +247,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   for (const Vec2& s : pattern_.positions) steps.push_back(window_step(s));
   const GLuint post = gl_->post_program.get();
   glProgramUniform2iv(post, glGetUniformLocation(post, "u_neighbours"), n, glm::value_ptr(steps[0]));
+  const GLuint pre = gl_->subsample_program.get();
+  if (multisample_) glProgramUniform2iv(pre, glGetUniformLocation(pre, "u_neighbours"), n, glm::value_ptr(steps[0]));
   gl::check("creating the RSAA pass");
 }
 RsaaPass::~RsaaPass() = default;
@@ -230,6 +270,32 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
   const GLint neighbour = glGetUniformLocation(program, "u_neighbour");
   const GLuint zero[4] = {0, 0, 0, 0};
   const GLfloat far_depth = 1.0f;
+  const auto draw_checked = [&](glm::vec2 jitter_ndc) {
+    glViewport(0, 0, frame.width, frame.height);
+    glUseProgram(program);
+    draw_geometry(program, jitter_ndc);
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (GLuint(current) != program)
+      throw std::logic_error("RSAA pre-pass: the draw callback drew with program " + std::to_string(current) +
+                             ", not the pre-pass program " + std::to_string(program) + " it was given");
+  };
+  if (multisample_) {  // one draw, the fragment shader run once per covered sample
+    const GLuint fb = gl_->multisample_target.get();
+    glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    const GLboolean sample_shading = glIsEnabled(GL_SAMPLE_SHADING);
+    GLfloat min_sample_shading = 0.0f;
+    glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &min_sample_shading);
+    glEnable(GL_SAMPLE_SHADING);
+    glMinSampleShading(1.0f);
+    draw_checked({0.0f, 0.0f});
+    glMinSampleShading(min_sample_shading);
+    if (!sample_shading) glDisable(GL_SAMPLE_SHADING);
+    gl::check("RSAA pre-pass (multisample)");
+    return;
+  }
   for (const gl::Framebuffer& fb : gl_->subsample_targets) glClearNamedFramebufferuiv(fb.get(), GL_COLOR, 0, zero);
   for (int i = 0; i < pattern_.size(); ++i) {
     // Subsample i goes to channel i % 4 of code texture i / 4; the depth buffer is its own.
@@ -241,15 +307,7 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
     const Vec2 s = pattern_.positions[i];
     gl::set_pass_state(true);  // again: the previous callback may have changed it
     glColorMaski(0, i % 4 == 0, i % 4 == 1, i % 4 == 2, i % 4 == 3);
-    glViewport(0, 0, frame.width, frame.height);
-    glUseProgram(program);
-    draw_geometry(program, jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height));
-    GLint current = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
-    if (GLuint(current) != program)
-      throw std::logic_error("RSAA pre-pass: the draw callback drew with program " +
-                             std::to_string(current) + ", not the pre-pass program " +
-                             std::to_string(program) + " it was given");
+    draw_checked(jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height));
   }
   gl::check("RSAA pre-pass");
 }
@@ -277,6 +335,10 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   glBindTextureUnit(1, frame.centre_normal);
   glBindTextureUnit(2, frame.centre_depth);
   glBindTextureUnit(3, gl_->table.get());
+  if (multisample_) {
+    set_uniform(program, "u_codes_ms", 4);
+    glBindTextureUnit(4, gl_->codes_ms.get());
+  }
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) {
     set_uniform(program, ("u_codes[" + std::to_string(k) + "]").c_str(), int(4 + k));
     glBindTextureUnit(GLuint(4 + k), gl_->codes[k].get());

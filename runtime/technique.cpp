@@ -84,6 +84,8 @@ void validate(const TechniqueOptions& o) {
       if (n == 4 && o.pattern != "gl4x" && o.pattern != "d3d4x")
         bad("rsaa --samples 4 uses --pattern gl4x or d3d4x");
     }
+    if (o.prepass != "jittered" && o.prepass != "msaa")
+      bad("rsaa --prepass must be jittered or msaa, not '" + o.prepass + "'");
     if (!o.table.empty() && !o.pattern.empty())
       bad("rsaa --table brings its own sample pattern: leave out --pattern");
     if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32)
@@ -119,12 +121,13 @@ std::string technique_label(const TechniqueOptions& o) {
     const std::size_t slash = o.table.find_last_of('/');
     std::string stem = o.table.substr(slash == std::string::npos ? 0 : slash + 1);
     if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ".json") == 0) stem.resize(stem.size() - 5);
-    return "rsaa table " + stem + " " + o.similarity + " auth" + std::to_string(o.auth);
+    return "rsaa table " + stem + " " + o.similarity + " auth" + std::to_string(o.auth) +
+           (o.prepass == "jittered" ? "" : " " + o.prepass);
   }
   const int n = samples_or(o, 8);
   std::string label = "rsaa " + std::to_string(n) + "x ";
   if (n == 4) label += (o.pattern.empty() ? std::string("gl4x") : o.pattern) + " ";
-  return label + o.similarity + " auth" + std::to_string(o.auth);
+  return label + o.similarity + " auth" + std::to_string(o.auth) + (o.prepass == "jittered" ? "" : " " + o.prepass);
 }
 
 std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, int height) {
@@ -168,6 +171,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.auth = o.auth;
   s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;
   s.code_bits = o.code_bits;
+  s.prepass = o.prepass;
   return s;
 }
 

@@ -20,6 +20,7 @@ struct TechniqueOptions {
   std::string pattern;               // rsaa 4x: gl4x (default) | d3d4x
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
   std::string table;                 // rsaa: an offset table file (JSON); empty: the built-in one
+  std::string prepass = "jittered";  // rsaa: jittered | msaa (RsaaSettings::prepass)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
                                      // paper's 0.1); 0: relative, agaa_k_pixels footprints

@@ -5,13 +5,18 @@
 #include "rsaa_common.glsl"
 
 // Codes arrive packed, four subsamples per texel (RSAA_CODE_TEXTURES = ceil(n / 4) textures):
-// subsample i is channel i % 4 of texture i / 4.
+// subsample i is channel i % 4 of texture i / 4; or, from the multisample pre-pass
+// (RSAA_PREPASS_MSAA), as sample i of one multisample texture.
 #define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
 
 uniform sampler2D u_colour;  // linear filtering, clamp to edge
 uniform usampler2D u_centre_normal;
 uniform sampler2D u_centre_depth;
+#ifdef RSAA_PREPASS_MSAA
+uniform usampler2DMS u_codes_ms;  // sample i = subsample i
+#else
 uniform usampler2D u_codes[RSAA_CODE_TEXTURES];
+#endif
 uniform sampler2D u_table;  // RGBA32F: offset.xy, representative subsample, unused
 uniform mat4 u_inverse_projection;
 uniform vec2 u_viewport;
@@ -26,11 +31,17 @@ layout(location = 1) out uint o_mask;
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uint codes[RSAA_SAMPLE_COUNT];
+#ifndef RSAA_PREPASS_MSAA
   uvec4 code_texels[RSAA_CODE_TEXTURES];
   for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = texelFetch(u_codes[k], pixel, 0);
+#endif
   bool any_different = false, any_uncovered = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+#ifdef RSAA_PREPASS_MSAA
+    codes[i] = texelFetch(u_codes_ms, pixel, i).x;
+#else
     codes[i] = code_texels[i / 4][i % 4];
+#endif
     any_different = any_different || codes[i] > 1u;
     any_uncovered = any_uncovered || codes[i] == 0u;
   }

@@ -1,6 +1,10 @@
-// RSAA pre-pass, one subsample: drawn once per subsample with the image jittered so that this
-// subsample lands on the pixel centre. Compares the surface seen by the subsample with the one
-// seen by the pixel centre (from the 1x G-buffer) and stores the compressed similarity code.
+// RSAA pre-pass: compares the surface seen by a subsample with the one seen by the pixel centre
+// (from the 1x G-buffer) and stores the compressed similarity code. Two ways to run it:
+//   jittered (default): drawn once per subsample with the image jittered so that the subsample
+//     lands on the pixel centre; the pass packs four subsamples per texel (it writes all four
+//     channels and masks the others);
+//   RSAA_PREPASS_MSAA: one draw into a multisample target whose sample positions are the
+//     pattern's, the shader run per sample (gl_SampleID = subsample index).
 #include "rsaa_common.glsl"
 
 in FragmentData {
@@ -18,10 +22,13 @@ uniform sampler2D u_centre_depth;
 uniform mat4 u_inverse_projection;  // unjittered
 uniform vec2 u_viewport;
 uniform uint u_primitive_base;
+#ifdef RSAA_PREPASS_MSAA
+uniform ivec2 u_neighbours[RSAA_SAMPLE_COUNT];  // nearest outside pixel per subsample, window space
+#else
 uniform ivec2 u_neighbour;  // nearest outside pixel of this subsample, window space
+#endif
 uniform float u_threshold;
 
-// The pass packs four subsamples per texel: it writes all four channels and masks the others.
 layout(location = 0) out uvec4 o_code;
 
 vec3 centre_position(ivec2 pixel) {
@@ -41,13 +48,19 @@ void main() {
     o_code = uvec4(RSAA_CODE_MAX);  // a surface subsample in a background pixel: different
     return;
   }
+#ifdef RSAA_PREPASS_MSAA
+  vec3 ps = interpolateAtSample(f_in.view_position, gl_SampleID);
+  ivec2 neighbour_step = u_neighbours[gl_SampleID];
+#else
   vec3 ps = f_in.view_position;
+  ivec2 neighbour_step = u_neighbour;
+#endif
   vec3 ns = f_in.face_normal;
   float similarity = rsaa_similarity(ps, ns, centre_position(pixel), rsaa_decode_normal(centre_normal));
 #if RSAA_AUTH == 2
   // Pre-pass authentication (paper section 2.4): a subsample that looks different from the
   // centre but even more different from its nearest outside pixel joins the similar cluster.
-  ivec2 outside = pixel + u_neighbour;
+  ivec2 outside = pixel + neighbour_step;
   if (similarity > 0.5 * u_threshold && all(greaterThanEqual(outside, ivec2(0))) &&
       all(lessThan(outside, ivec2(u_viewport)))) {
     uvec2 outside_normal = texelFetch(u_centre_normal, outside, 0).xy;
