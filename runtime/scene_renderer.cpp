@@ -36,6 +36,15 @@ void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitt
   glDisable(GL_DEPTH_TEST);
 }
 
+void SceneRenderer::draw_gbuffer(const GpuScene& scene, const View& view, const RsaaTargets& targets,
+                                 glm::vec2 jitter_ndc) const {
+  const glm::vec3 background = scene.background();
+  targets.clear(&background.x);
+  targets.bind();
+  draw(scene, view, jitter_ndc, gbuffer_.get());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 void clear_to_background(GLuint framebuffer, const GpuScene& scene) {
   const glm::vec3 bg = scene.background();
   const GLfloat colour[4] = {bg.r, bg.g, bg.b, 1.0f};

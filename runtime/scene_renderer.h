@@ -2,6 +2,8 @@
 // forms (colour only; colour + the RSAA G-buffer), and the colour targets of a 1x pass.
 #pragma once
 
+#include "runtime/rsaa_pass.h"
+
 #include <glm/glm.hpp>
 
 #include "runtime/fullscreen.h"
@@ -19,6 +21,10 @@ class SceneRenderer {
   static void draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program);
 
   GLuint shade_program() const { return shade_.get(); }
+  // The 1x frame RSAA post-processes: clears `targets` and draws the scene into them with the
+  // G-buffer program, the image translated by `jitter_ndc`. Leaves the default framebuffer bound.
+  void draw_gbuffer(const GpuScene& scene, const View& view, const RsaaTargets& targets,
+                    glm::vec2 jitter_ndc = {0.0f, 0.0f}) const;
   // Also writes location 1: RG16UI compressed face normal, location 2: R32UI primitive id + 1.
   GLuint gbuffer_program() const { return gbuffer_.get(); }
 

@@ -90,10 +90,7 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
   SceneRenderer renderer;
   const RsaaTargets targets(kWidth, kHeight);
-  const glm::vec3 background = gpu.background();
-  targets.clear(&background.x);
-  targets.bind();
-  SceneRenderer::draw(gpu, view, {0, 0}, renderer.gbuffer_program());
+  renderer.draw_gbuffer(gpu, view, targets);
 
   // An engine's state, all of it different from what the pass draws with.
   const gl::Texture engine_texture = gl::make_texture_2d(GL_RGBA8, 4, 4);

@@ -164,11 +164,8 @@ TEST_F(Runtime, TablesAtRunTime) {
   const GpuScene gpu(scene);
   const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
   RsaaTargets targets(kWidth, kHeight);
-  const glm::vec3 background = gpu.background();
-  targets.clear(&background.x);
-  targets.bind();
   const SceneRenderer renderer;
-  SceneRenderer::draw(gpu, view, {0.0f, 0.0f}, renderer.gbuffer_program());
+  renderer.draw_gbuffer(gpu, view, targets);
   const RsaaFrame frame = targets.frame(view.inverse_projection());
   const Image one_x = read_back_image(targets.colour(), kWidth, kHeight);
   const auto resolve_with = [&](const RsaaSettings& settings) {
@@ -295,10 +292,7 @@ TEST_F(Runtime, NonFiniteColoursDoNotSpreadInTheGlPostProcess) {
   const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
   SceneRenderer renderer;
   const RsaaTargets targets(kWidth, kHeight);
-  const glm::vec3 background = gpu.background();
-  targets.clear(&background.x);
-  targets.bind();
-  SceneRenderer::draw(gpu, view, {0, 0}, renderer.gbuffer_program());
+  renderer.draw_gbuffer(gpu, view, targets);
   // Row 60 becomes NaN, row 61 infinite, row 62 HDR.
   std::vector<float> nan_row(kWidth * 4, std::nanf("")), inf_row(kWidth * 4, INFINITY),
       hdr_row(kWidth * 4, 50.0f);

@@ -65,8 +65,13 @@ for scene in builtin:default "$engine" builtin:grazing; do
     $rsaa diagnose --scene "$scene" --similarity "$similarity" --out-dir "$out/diagnosis/$name-$similarity" \
       >"$out/diagnosis/$name-$similarity.md"
   done
-  cp "$out/diagnosis/$name-sadp-plane/error_map.png" "docs/images/diagnosis_$name.png"
+  for similarity in sadp sadp-plane; do
+    cp "$out/diagnosis/$name-$similarity/error_map.png" "docs/images/diagnosis_${name}_$similarity.png"
+  done
 done
+step "bench, RSAA against its baselines" bench-rsaa.md
+$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth0,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0" \
+  --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"
 step "bench" bench.md
 $rsaa bench --target-psnr 38 --out-dir "$out/bench" >"$out/bench.md"
 cp "$out/bench/pareto-default.png" docs/images/bench_pareto_default.png

@@ -12,11 +12,7 @@ class Rsaa : public Technique {
 
   void render(const GpuScene& scene, const View& view, GLuint output) override {
     timer_.begin("main");
-    const glm::vec3 background = scene.background();
-    targets_.clear(&background.x);
-    targets_.bind();
-    SceneRenderer::draw(scene, view, {0.0f, 0.0f}, renderer_.gbuffer_program());
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    renderer_.draw_gbuffer(scene, view, targets_);
     timer_.end();
 
     const RsaaFrame frame = targets_.frame(view.inverse_projection());

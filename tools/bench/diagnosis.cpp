@@ -256,8 +256,8 @@ std::vector<std::uint8_t> diagnosis_picture(const Diagnosis& d) {
   std::vector<std::uint8_t> rgb(std::size_t(d.width) * d.height * 3);
   const auto& colours = diagnosis_class_colours();
   for (std::size_t p = 0; p < d.rsaa_error.size(); ++p) {
-    // sqrt(error) is the RMS channel error in 8-bit steps; x 8 makes 32 steps full brightness.
-    const double brightness = std::min(1.0, std::sqrt(double(d.rsaa_error[p])) / 32.0);
+    // sqrt(error) is the RMS channel error in 8-bit steps: 12 steps or more at full brightness.
+    const double brightness = std::min(1.0, std::sqrt(double(d.rsaa_error[p])) / 12.0);
     const auto& c = colours[int(d.pixel_class[p])];
     for (int k = 0; k < 3; ++k) rgb[p * 3 + k] = std::uint8_t(std::lround(c[k] * brightness));
   }

@@ -36,13 +36,7 @@ struct DiagnoseArgs {
 // Triangle id + 1 (0 = background) seen at each pixel for the sample at pixel-space `offset`.
 std::vector<std::uint32_t> primitive_ids(const GpuScene& scene, const View& view, RsaaTargets& targets,
                                          const SceneRenderer& renderer, Vec2 offset) {
-  const glm::vec3 background = scene.background();
-  targets.clear(&background.x);
-  targets.bind();
-  glViewport(0, 0, view.width, view.height);
-  SceneRenderer::draw(scene, view, jitter_ndc_for_sample(offset.x, offset.y, view.width, view.height),
-                      renderer.gbuffer_program());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  renderer.draw_gbuffer(scene, view, targets, jitter_ndc_for_sample(offset.x, offset.y, view.width, view.height));
   return read_back_uints(targets.frame(view.inverse_projection()).centre_primitive, view.width, view.height);
 }
 
