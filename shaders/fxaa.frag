@@ -14,21 +14,26 @@ const int kSearchSteps = 10;
 // Luma of display values: edges are judged as seen.
 float luma(vec3 linear_rgb) { return sqrt(dot(max(linear_rgb, vec3(0.0)), vec3(0.299, 0.587, 0.114))); }
 float luma_at(vec2 p) { return luma(texture(u_colour, p / u_viewport).rgb); }
+// The 3x3 neighbourhood at texel centres: unfiltered fetches, cheaper than filtered ones.
+float luma_of(ivec2 pixel) {
+  return luma(texelFetch(u_colour, clamp(pixel, ivec2(0), ivec2(u_viewport) - 1), 0).rgb);
+}
 
 void main() {
   vec2 pos = gl_FragCoord.xy;
-  vec4 centre = texture(u_colour, pos / u_viewport);
+  ivec2 pixel = ivec2(pos);
+  vec4 centre = texelFetch(u_colour, pixel, 0);
   float m = luma(centre.rgb);
-  float n = luma_at(pos + vec2(0, 1)), s = luma_at(pos - vec2(0, 1));
-  float e = luma_at(pos + vec2(1, 0)), w = luma_at(pos - vec2(1, 0));
+  float n = luma_of(pixel + ivec2(0, 1)), s = luma_of(pixel - ivec2(0, 1));
+  float e = luma_of(pixel + ivec2(1, 0)), w = luma_of(pixel - ivec2(1, 0));
   float hi = max(max(max(n, s), max(e, w)), m), lo = min(min(min(n, s), min(e, w)), m);
   float contrast = hi - lo;
   if (contrast < max(kEdgeThresholdMin, hi * kEdgeThreshold) || any(isnan(centre)) || any(isinf(centre))) {
     o_colour = centre;
     return;
   }
-  float ne = luma_at(pos + vec2(1, 1)), nw = luma_at(pos + vec2(-1, 1));
-  float se = luma_at(pos + vec2(1, -1)), sw = luma_at(pos + vec2(-1, -1));
+  float ne = luma_of(pixel + ivec2(1, 1)), nw = luma_of(pixel + ivec2(-1, 1));
+  float se = luma_of(pixel + ivec2(1, -1)), sw = luma_of(pixel + ivec2(-1, -1));
   // Sub-pixel aliasing: how far the centre stands out from its neighbourhood average.
   float average = (2.0 * (n + s + e + w) + ne + nw + se + sw) / 12.0;
   float subpixel = clamp(abs(average - m) / contrast, 0.0, 1.0);

@@ -215,7 +215,9 @@ TEST_F(GlslExtremes, DepthCodesStayDistinctAboveTwoPercent) {
     for (float v : percents) cases.push_back(make_case({0, 0, -1}, kZ, {0, 0, -1}, kZ, v));
     const auto r = probe(cases, bits, "#define RSAA_SIMILARITY_DEPTH\n");
     for (std::size_t i = 0; i < percents.size(); ++i) {
-      if (i > 0) EXPECT_GT(r[i].code, r[i - 1].code) << bits << " bits, " << percents[i] << "%";
+      if (i > 0) {
+        EXPECT_GT(r[i].code, r[i - 1].code) << bits << " bits, " << percents[i] << "%";
+      }
       // Decoded within the code's resolution: 1/16 of an octave of (1 + v / 0.05%) at 8 bits.
       EXPECT_NEAR(r[i].decoded, percents[i], 0.05f * (percents[i] + 0.05f)) << bits << " bits";
     }
