@@ -11,6 +11,7 @@
 #include "core/image_metrics.h"
 #include "runtime/coverage_lists.h"
 #include "runtime/gl_context.h"
+#include "tests/gl_test.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "runtime/technique.h"
@@ -19,13 +20,7 @@
 namespace rsaa {
 namespace {
 
-class CoverageGl : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { context_ = new gl::HeadlessContext; }
-  static void TearDownTestSuite() { delete context_; }
-  static gl::HeadlessContext* context_;
-};
-gl::HeadlessContext* CoverageGl::context_ = nullptr;
+class CoverageGl : public test::GlTest {};
 
 struct Rendered {
   DisplayImage gl, cpu;

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "runtime/gl_context.h"
+#include "tests/gl_test.h"
 #include "runtime/gl_objects.h"
 #include "runtime/shader_library.h"
 
@@ -67,13 +68,7 @@ ProbeCase make_case(std::array<float, 3> p1, std::array<float, 3> n1, std::array
   return {{p1[0], p1[1], p1[2], value}, {n1[0], n1[1], n1[2], 0}, {p2[0], p2[1], p2[2], 0}, {n2[0], n2[1], n2[2], 0}};
 }
 
-class GlslExtremes : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { context_ = new gl::HeadlessContext; }
-  static void TearDownTestSuite() { delete context_; }
-  static gl::HeadlessContext* context_;
-};
-gl::HeadlessContext* GlslExtremes::context_ = nullptr;
+class GlslExtremes : public test::GlTest {};
 
 const float kNan = std::numeric_limits<float>::quiet_NaN();
 const std::array<float, 3> kZ = {0, 0, 1}, kX = {1, 0, 0};

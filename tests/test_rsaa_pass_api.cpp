@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "runtime/gl_context.h"
+#include "tests/gl_test.h"
 #include "runtime/render.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/scene.h"
@@ -14,13 +15,7 @@ namespace {
 
 constexpr int kWidth = 64, kHeight = 48;
 
-class RsaaPassApi : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { context_ = new gl::HeadlessContext; }
-  static void TearDownTestSuite() { delete context_; }
-  static gl::HeadlessContext* context_;
-};
-gl::HeadlessContext* RsaaPassApi::context_ = nullptr;
+class RsaaPassApi : public test::GlTest {};
 
 // The message of the std::invalid_argument `f` throws ("" if it throws none).
 template <typename F>

@@ -12,6 +12,7 @@
 #include "core/offset_table.h"
 #include "core/postprocess_cpu.h"
 #include "runtime/gl_context.h"
+#include "tests/gl_test.h"
 #include "runtime/render.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/scene.h"
@@ -23,11 +24,8 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
-class Runtime : public ::testing::Test {
+class Runtime : public test::GlTest {
  protected:
-  static void SetUpTestSuite() { context_ = new gl::HeadlessContext; }
-  static void TearDownTestSuite() { delete context_; }
-
   static Image render(const std::string& scene_name, const TechniqueOptions& o) {
     const Scene scene = load_scene(scene_name);
     const GpuScene gpu(scene);
@@ -37,11 +35,7 @@ class Runtime : public ::testing::Test {
   static double psnr(const Image& a, const Image& reference) {
     return compare_images(to_display(a), to_display(reference)).psnr_db;
   }
-
-  static gl::HeadlessContext* context_;
 };
-
-gl::HeadlessContext* Runtime::context_ = nullptr;
 
 bool all_finite(const Image& image) {
   for (const Rgb& p : image.pixels)
