@@ -135,7 +135,7 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
 
 namespace rsaa::gl {
 
-SavedState::SavedState(int texture_units) {
+SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_bindings) {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
   glGetIntegerv(GL_VIEWPORT, viewport_);
@@ -145,29 +145,49 @@ SavedState::SavedState(int texture_units) {
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
   blend_ = glIsEnabled(GL_BLEND);
   scissor_ = glIsEnabled(GL_SCISSOR_TEST);
+  sample_shading_ = glIsEnabled(GL_SAMPLE_SHADING);
+  glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &min_sample_shading_);
   glGetBooleani_v(GL_COLOR_WRITEMASK, 0, colour_mask_);
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
-  textures_2d_.resize(std::size_t(texture_units));
-  texture_arrays_.resize(std::size_t(texture_units));
-  for (int unit = 0; unit < texture_units; ++unit) {
+  for (int unit : texture_units) {
+    UnitTextures t{unit, 0, 0, 0};
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &textures_2d_[std::size_t(unit)]);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &texture_arrays_[std::size_t(unit)]);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &t.texture_2d);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &t.texture_array);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &t.texture_multisample);
+    textures_.push_back(t);
   }
   glActiveTexture(GLenum(active_texture_));
+  for (int binding : uniform_bindings) {
+    UniformBuffer u{binding, 0, 0, 0};
+    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, GLuint(binding), &u.buffer);
+    glGetInteger64i_v(GL_UNIFORM_BUFFER_START, GLuint(binding), &u.start);
+    glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, GLuint(binding), &u.size);
+    uniform_buffers_.push_back(u);
+  }
 }
 
 SavedState::~SavedState() {
-  for (std::size_t unit = 0; unit < textures_2d_.size(); ++unit) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-    glBindTexture(GL_TEXTURE_2D, GLuint(textures_2d_[unit]));
-    glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(texture_arrays_[unit]));
+  for (const UnitTextures& t : textures_) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + t.unit));
+    glBindTexture(GL_TEXTURE_2D, GLuint(t.texture_2d));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(t.texture_array));
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, GLuint(t.texture_multisample));
   }
   glActiveTexture(GLenum(active_texture_));
+  for (const UniformBuffer& u : uniform_buffers_) {
+    // A range of size 0 was bound whole (glBindBufferBase) or not at all.
+    if (u.buffer != 0 && u.size > 0)
+      glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(u.binding), GLuint(u.buffer), GLintptr(u.start), GLsizeiptr(u.size));
+    else
+      glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(u.binding), GLuint(u.buffer));
+  }
   glBindVertexArray(GLuint(vertex_array_));
   blend_ ? glEnable(GL_BLEND) : glDisable(GL_BLEND);
   scissor_ ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
+  sample_shading_ ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);
+  glMinSampleShading(min_sample_shading_);
   glColorMaski(0, colour_mask_[0], colour_mask_[1], colour_mask_[2], colour_mask_[3]);
   glDepthFunc(GLenum(depth_func_));
   glDepthMask(depth_mask_);

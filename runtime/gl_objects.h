@@ -88,21 +88,35 @@ namespace rsaa::gl {
 
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
 // bindings, viewport, current program, depth test/function/mask, blending, scissor test, colour
-// mask 0, the vertex array and the 2D / 2D-array textures of units [0, texture_units). So that
-// a pass dropped into an engine leaves the engine's state as it found it.
+// mask 0, sample shading, the vertex array, textures and uniform buffers (below). So that a pass
+// dropped into an engine leaves the engine's state as it found it.
 class SavedState {
  public:
-  explicit SavedState(int texture_units);
+  // Also saves the 2D, 2D-array and 2D-multisample textures bound to `texture_units` and the
+  // uniform buffers bound at `uniform_bindings`.
+  SavedState(std::vector<int> texture_units, std::vector<int> uniform_bindings = {});
   ~SavedState();
   SavedState(const SavedState&) = delete;
   SavedState& operator=(const SavedState&) = delete;
 
  private:
+  struct UnitTextures {
+    int unit;
+    GLint texture_2d, texture_array, texture_multisample;
+  };
+  struct UniformBuffer {
+    int binding;
+    GLint buffer;
+    GLint64 start, size;
+  };
   GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, viewport_[4] = {}, program_ = 0;
   GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, blend_ = GL_FALSE, scissor_ = GL_FALSE;
+  GLboolean sample_shading_ = GL_FALSE;
+  GLfloat min_sample_shading_ = 0.0f;
   GLboolean colour_mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;
-  std::vector<GLint> textures_2d_, texture_arrays_;
+  std::vector<UnitTextures> textures_;
+  std::vector<UniformBuffer> uniform_buffers_;
 };
 
 // The state a pass draws with, whatever the engine left: clears and writes reach every pixel

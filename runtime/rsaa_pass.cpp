@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <type_traits>
 
@@ -29,12 +31,30 @@ struct RsaaPass::Objects {
   gl::Texture codes_ms, depth_ms;  // multisample pre-pass: sample i = subsample i
   gl::Framebuffer multisample_target;
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
+  gl::Buffer uniforms;  // RsaaUniformBlock
   gl::Program subsample_program, post_program;
   gl::CachedFramebuffer resolve_target;
 };
 
 namespace {
 
+// shaders/rsaa_uniforms.glsl's block, std140: a mat4, two vec2, a float and an int, padding to
+// 16 bytes, then one ivec4 per subsample.
+struct RsaaUniformHead {
+  float inverse_projection[16];
+  float viewport[2];
+  float jitter_ndc[2];
+  float threshold;
+  std::int32_t subsample;
+  std::int32_t padding[2];
+};
+static_assert(sizeof(RsaaUniformHead) == 96, "std140 layout of RsaaUniforms");
+constexpr GLintptr kJitterOffset = offsetof(RsaaUniformHead, jitter_ndc);
+static_assert(offsetof(RsaaUniformHead, subsample) == kJitterOffset + 12, "jitter and subsample are one update");
+
+// The pass's post-process texture units (rsaa_post.glsl with RSAA_POST_FIRST_UNIT 0).
+constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, kFirstCodeUnit = 4;
+constexpr int kPostUnits = 8;
 
 // The table the pass uses: the settings' own, or the built-in one of the pattern named.
 OffsetTable table_of(const RsaaSettings& settings) {
@@ -116,18 +136,6 @@ GLenum code_format(int bits) {
   throw std::invalid_argument("RSAA code bits must be 8, 16 or 32, not " + std::to_string(bits));
 }
 
-void set_uniform(GLuint program, const char* name, int value) {
-  glProgramUniform1i(program, glGetUniformLocation(program, name), value);
-}
-
-void set_frame_uniforms(GLuint program, const RsaaFrame& frame, float threshold) {
-  glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "u_inverse_projection"), 1,
-                            GL_FALSE, glm::value_ptr(frame.inverse_projection));
-  glProgramUniform2f(program, glGetUniformLocation(program, "u_viewport"), float(frame.width),
-                     float(frame.height));
-  glProgramUniform1f(program, glGetUniformLocation(program, "u_threshold"), threshold);
-}
-
 // A missing or mismatched texture in the engine's frame is an error naming the field.
 void validate_frame(const RsaaFrame& frame, int width, int height) {
   if (frame.width != width || frame.height != height)
@@ -197,11 +205,39 @@ SamplePattern query_gl_sample_pattern(int samples) {
   return pattern_from_gl_positions("gl" + std::to_string(samples) + "x", positions);
 }
 
+std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass) {
+  std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(sample_count) + "\n" +
+                        "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
+                        "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n" +
+                        "#define RSAA_PREPASS_FIRST_UNIT " + std::to_string(settings.prepass_first_unit) + "\n" +
+                        "#define RSAA_UNIFORM_BINDING " + std::to_string(settings.uniform_binding) + "\n";
+  if (multisample_prepass) defines += "#define RSAA_PREPASS_MSAA\n";
+  if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
+  else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
+  else if (settings.similarity != "sadp")
+    throw std::invalid_argument("RSAA similarity '" + settings.similarity +
+                                "' is not one of sadp, depth, sadp-plane");
+  if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
+  return defines;
+}
+
+std::string rsaa_shader_file(const std::string& name) { return gl::shader_source(name); }
+
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     : settings_(settings), width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   if (settings.auth < 0 || settings.auth > 2)
     throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
   if (!(settings.threshold >= 0.0f)) throw std::invalid_argument("RSAA threshold must be >= 0");
+  GLint units = 0, bindings = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+  glGetIntegerv(GL_MAX_UNIFORM_BUFFER_BINDINGS, &bindings);
+  if (settings.prepass_first_unit < 0 || settings.prepass_first_unit + 2 >= units)
+    throw std::invalid_argument("RSAA prepass_first_unit " + std::to_string(settings.prepass_first_unit) +
+                                ": the pre-pass needs units " + std::to_string(settings.prepass_first_unit) +
+                                " to +2, this driver has " + std::to_string(units) + " fragment texture units");
+  if (settings.uniform_binding < 0 || settings.uniform_binding >= bindings)
+    throw std::invalid_argument("RSAA uniform_binding " + std::to_string(settings.uniform_binding) +
+                                " is not below this driver's " + std::to_string(bindings) + " uniform buffer bindings");
   const OffsetTable table = table_of(settings);
   pattern_ = table.pattern;
   gl_->table = table_texture(table);
@@ -226,73 +262,67 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     }
   }
 
-  std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(n) + "\n" +
-                        "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
-                        "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n";
-  if (multisample_) defines += "#define RSAA_PREPASS_MSAA\n";
-  if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
-  else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
-  else if (settings.similarity != "sadp")
-    throw std::invalid_argument("RSAA similarity '" + settings.similarity +
-                                "' is not one of sadp, depth, sadp-plane");
+  // The uniform block: the frame's fields are written per call, the neighbours once.
+  std::vector<std::int32_t> block(sizeof(RsaaUniformHead) / 4 + 4 * std::size_t(n), 0);
+  for (int i = 0; i < n; ++i) {
+    const glm::ivec2 step = window_step(pattern_.positions[i]);
+    block[sizeof(RsaaUniformHead) / 4 + 4 * std::size_t(i)] = step.x;
+    block[sizeof(RsaaUniformHead) / 4 + 4 * std::size_t(i) + 1] = step.y;
+  }
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  gl_->uniforms = gl::Buffer(buffer);
+  glNamedBufferStorage(buffer, GLsizeiptr(block.size() * 4), block.data(), GL_DYNAMIC_STORAGE_BIT);
+
+  const std::string defines = rsaa_shader_defines(settings, n, multisample_);
   gl_->subsample_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
-                                         {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
-                                         {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
-                                        defines, "RSAA pre-pass");
-  if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
+                                             {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
+                                             {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
+                                            defines, "RSAA pre-pass");
   gl_->post_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
-                                    {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
-                                   defines, "RSAA post-process");
-  std::vector<glm::ivec2> steps;
-  for (const Vec2& s : pattern_.positions) steps.push_back(window_step(s));
-  const GLuint post = gl_->post_program.get();
-  glProgramUniform2iv(post, glGetUniformLocation(post, "u_neighbours"), n, glm::value_ptr(steps[0]));
-  const GLuint pre = gl_->subsample_program.get();
-  if (multisample_) glProgramUniform2iv(pre, glGetUniformLocation(pre, "u_neighbours"), n, glm::value_ptr(steps[0]));
+                                        {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
+                                       defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
+                                       "RSAA post-process");
   gl::check("creating the RSAA pass");
 }
 RsaaPass::~RsaaPass() = default;
 RsaaPass::RsaaPass(RsaaPass&&) noexcept = default;
 RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;
 
-void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
+std::string RsaaPass::prepass_glsl() const {
+  return "// RSAA pre-pass for pattern " + pattern_.name + " (generated by RsaaPass::prepass_glsl)\n" +
+         rsaa_shader_defines(settings_, pattern_.size(), multisample_) + rsaa_shader_file("rsaa_prepass.glsl");
+}
+
+void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
+  RsaaUniformHead head{};
+  std::copy_n(glm::value_ptr(frame.inverse_projection), 16, head.inverse_projection);
+  head.viewport[0] = float(frame.width), head.viewport[1] = float(frame.height);
+  head.threshold = settings_.threshold;
+  head.subsample = -1;
+  glNamedBufferSubData(gl_->uniforms.get(), 0, sizeof head, &head);
+  glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings_.uniform_binding), gl_->uniforms.get());
+}
+
+void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw) {
   validate_frame(frame, width_, height_);
-  const gl::SavedState saved(8);
+  const int first = settings_.prepass_first_unit;
+  const gl::SavedState saved({first, first + 1, first + 2}, {settings_.uniform_binding});
   gl::set_pass_state(true);  // before the clears: they obey the engine's scissor and masks
-  const GLuint program = gl_->subsample_program.get();
-  set_frame_uniforms(program, frame, settings_.threshold);
-  set_uniform(program, "u_centre_normal", 1);
-  set_uniform(program, "u_centre_primitive", 2);
-  set_uniform(program, "u_centre_depth", 3);
-  glBindTextureUnit(1, frame.centre_normal);
-  glBindTextureUnit(2, frame.centre_primitive);
-  glBindTextureUnit(3, frame.centre_depth);
-  const GLint neighbour = glGetUniformLocation(program, "u_neighbour");
+  write_frame_uniforms(frame);
+  const GLuint textures[3] = {frame.centre_normal, frame.centre_primitive, frame.centre_depth};
+  glBindTextures(GLuint(first), 3, textures);
   const GLuint zero[4] = {0, 0, 0, 0};
   const GLfloat far_depth = 1.0f;
-  const auto draw_checked = [&](glm::vec2 jitter_ndc) {
-    glViewport(0, 0, frame.width, frame.height);
-    glUseProgram(program);
-    draw_geometry(program, jitter_ndc);
-    GLint current = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
-    if (GLuint(current) != program)
-      throw std::logic_error("RSAA pre-pass: the draw callback drew with program " + std::to_string(current) +
-                             ", not the pre-pass program " + std::to_string(program) + " it was given");
-  };
   if (multisample_) {  // one draw, the fragment shader run once per covered sample
     const GLuint fb = gl_->multisample_target.get();
     glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
-    const GLboolean sample_shading = glIsEnabled(GL_SAMPLE_SHADING);
-    GLfloat min_sample_shading = 0.0f;
-    glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &min_sample_shading);
+    glViewport(0, 0, frame.width, frame.height);
     glEnable(GL_SAMPLE_SHADING);
     glMinSampleShading(1.0f);
-    draw_checked({0.0f, 0.0f});
-    glMinSampleShading(min_sample_shading);
-    if (!sample_shading) glDisable(GL_SAMPLE_SHADING);
+    draw(-1, {0.0f, 0.0f});
     gl::check("RSAA pre-pass (multisample)");
     return;
   }
@@ -302,14 +332,62 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
     const GLuint fb = gl_->subsample_targets[i / 4].get();
     glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
-    const glm::ivec2 step = window_step(pattern_.positions[i]);
-    glProgramUniform2i(program, neighbour, step.x, step.y);
+    glViewport(0, 0, frame.width, frame.height);
     const Vec2 s = pattern_.positions[i];
+    const glm::vec2 jitter = jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height);
+    const struct {
+      float jitter_ndc[2];
+      float threshold;
+      std::int32_t subsample;
+    } per_draw = {{jitter.x, jitter.y}, settings_.threshold, i};
+    glNamedBufferSubData(gl_->uniforms.get(), kJitterOffset, sizeof per_draw, &per_draw);
     gl::set_pass_state(true);  // again: the previous callback may have changed it
     glColorMaski(0, i % 4 == 0, i % 4 == 1, i % 4 == 2, i % 4 == 3);
-    draw_checked(jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height));
+    draw(i, jitter);
   }
   gl::check("RSAA pre-pass");
+}
+
+void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
+  const GLuint program = gl_->subsample_program.get();
+  run_prepass(frame, [&](int, glm::vec2 jitter_ndc) {
+    glUseProgram(program);
+    draw_geometry(program, jitter_ndc);
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (GLuint(current) != program)
+      throw std::logic_error("RSAA pre-pass: the draw callback drew with program " + std::to_string(current) +
+                             ", not the pre-pass program " + std::to_string(program) + " it was given");
+  });
+}
+
+void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const std::function<void()>& draw) {
+  const int first = settings_.prepass_first_unit;
+  const GLuint expected_textures[3] = {frame.centre_normal, frame.centre_primitive, frame.centre_depth};
+  run_prepass(frame, [&](int, glm::vec2) {
+    draw();
+    // What the engine's draw must leave alone, checked after the fact: a clear error, never
+    // codes computed from another texture.
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (current == 0 ||
+        glGetProgramResourceIndex(GLuint(current), GL_UNIFORM_BLOCK, "RsaaUniforms") == GL_INVALID_INDEX)
+      throw std::logic_error("RSAA pre-pass: the engine's program " + std::to_string(current) +
+                             " has no RsaaUniforms block: its stages must include RsaaPass::prepass_glsl() "
+                             "and call rsaa_jitter() and rsaa_prepass_code()");
+    GLint bound = 0;
+    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, GLuint(settings_.uniform_binding), &bound);
+    if (GLuint(bound) != gl_->uniforms.get())
+      throw std::logic_error("RSAA pre-pass: the engine's draw rebound uniform buffer binding " +
+                             std::to_string(settings_.uniform_binding) + " (RsaaSettings::uniform_binding)");
+    for (int k = 0; k < 3; ++k) {
+      GLint texture = 0;
+      glGetIntegeri_v(GL_TEXTURE_BINDING_2D, GLuint(first + k), &texture);
+      if (GLuint(texture) != expected_textures[k])
+        throw std::logic_error("RSAA pre-pass: the engine's draw rebound texture unit " + std::to_string(first + k) +
+                               " (RsaaSettings::prepass_first_unit + " + std::to_string(k) + ")");
+    }
+  });
 }
 
 void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
@@ -317,7 +395,9 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
   if (settings_.output_mask && mask_output)
     gl::require_texture(mask_output, GL_R32UI, width_, height_, "RsaaPass::resolve mask_output");
-  const gl::SavedState saved(8);
+  std::vector<int> units;
+  for (int unit = 0; unit < kPostUnits; ++unit) units.push_back(unit);
+  const gl::SavedState saved(units, {settings_.uniform_binding});
   gl::set_pass_state(false);
   std::vector<gl::Attachment> targets = {{output}};
   if (settings_.output_mask) {
@@ -325,27 +405,16 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     targets.push_back({mask_output});
   }
   const GLuint fb = gl_->resolve_target.get(targets);
-  const GLuint program = gl_->post_program.get();
-  set_frame_uniforms(program, frame, settings_.threshold);
-  set_uniform(program, "u_colour", 0);
-  set_uniform(program, "u_centre_normal", 1);
-  set_uniform(program, "u_centre_depth", 2);
-  set_uniform(program, "u_table", 3);
-  glBindTextureUnit(0, frame.colour);
-  glBindTextureUnit(1, frame.centre_normal);
-  glBindTextureUnit(2, frame.centre_depth);
-  glBindTextureUnit(3, gl_->table.get());
-  if (multisample_) {
-    set_uniform(program, "u_codes_ms", 4);
-    glBindTextureUnit(4, gl_->codes_ms.get());
-  }
-  for (std::size_t k = 0; k < gl_->codes.size(); ++k) {
-    set_uniform(program, ("u_codes[" + std::to_string(k) + "]").c_str(), int(4 + k));
-    glBindTextureUnit(GLuint(4 + k), gl_->codes[k].get());
-  }
+  write_frame_uniforms(frame);
+  glBindTextureUnit(kColourUnit, frame.colour);
+  glBindTextureUnit(kNormalUnit, frame.centre_normal);
+  glBindTextureUnit(kDepthUnit, frame.centre_depth);
+  glBindTextureUnit(kTableUnit, gl_->table.get());
+  if (multisample_) glBindTextureUnit(kFirstCodeUnit, gl_->codes_ms.get());
+  for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);
-  glUseProgram(program);
+  glUseProgram(gl_->post_program.get());
   draw_fullscreen_triangle();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   gl::check("RSAA post-process");

@@ -19,25 +19,42 @@
 // and resolve() check the four (name, format, size) and throw std::invalid_argument naming the
 // field, so a forgotten or wrong binding is an error, not a wrong image.
 //
-// THE PRE-PASS CALLBACK. render_subsamples() calls `draw_geometry(program, jitter_ndc)` once
-// per subsample, with its own framebuffer bound, `program` current, the viewport set to the
-// frame, depth test on (GL_LESS, depth writes on), blending and scissor test off. The callback
-// draws the same geometry as the 1x frame with `program` (render_subsamples() throws
-// std::logic_error if another program is current when it returns), after setting on it:
+// THE PRE-PASS, WITH THE ENGINE'S OWN SHADERS (render_subsamples_with_own_shaders). The engine
+// compiles a program whose stages begin with `#version 450 core` (or later), then prepass_glsl()
+// (for the vertex stage after `#define RSAA_INCLUDE_FS 0`), and which call
+//   vertex stage    gl_Position = rsaa_jitter(clip_position);
+//   fragment stage  layout(location = 0) out uvec4 o_code;
+//                   o_code = rsaa_prepass_code(view_position, view_face_normal, primitive);
+// (shaders/rsaa_prepass.glsl documents them; rsaa_face_normal(view_position) gives the face
+// normal from derivatives.) The callback binds that program and its vertex arrays and draws the
+// frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample).
+// Before each call the pass binds its framebuffer, the viewport, the pre-pass state below, the
+// uniform block at settings.uniform_binding and three textures at units settings.prepass_first_unit
+// to +2; the callback may use any other unit and binding. After each call the pass checks that
+// the current program declares the block and that its units and binding are untouched, and
+// throws std::logic_error naming what is not.
+//
+// THE PRE-PASS, WITH THE PASS'S PROGRAM (render_subsamples). The pass calls
+// `draw_geometry(program, jitter_ndc)` with its own program current (render_subsamples() throws
+// std::logic_error if another program is current when it returns), after the same set-up. The
+// callback draws the same geometry as the 1x frame with `program`, after setting on it:
 //   vertex attributes  0 position (vec3, world space: the pre-pass applies no model matrix,
-//                      so instanced, skinned or morphed geometry is baked into a buffer first,
-//                      as examples/02_own_vertex_stage.cpp does), 1 normal, 2 uv, 3 albedo
+//                      so instanced, skinned or morphed geometry is baked into a buffer first;
+//                      engines with such geometry use the way above), 1 normal, 2 uv, 3 albedo
 //                      (only 0 matters to the pre-pass; the others may stay disabled)
 //   u_view, u_projection (mat4)   the frame's camera, unjittered
 //   u_jitter_ndc (vec2)           = jitter_ndc: the image translation that puts this subsample
 //                                   on the pixel centre
 //   u_primitive_base (uint)       first primitive id of this draw call as written into
 //                                 centre_primitive (0 for one draw per frame; default 0)
-// The pass sets every other uniform and texture of its own programs.
 //
-// GL STATE. Both calls restore what they change: framebuffer bindings, viewport, current
-// program, depth test/function/mask, blending, scissor test, colour mask 0, the vertex array and
-// the textures bound to units 0-7; the engine's scissor and masks do not reach the pass.
+// The pre-pass state: depth test on (GL_LESS, depth writes on), blending and scissor test off,
+// and for the multisample pre-pass sample shading on.
+//
+// GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
+// program, depth test/function/mask, blending, scissor test, sample shading, colour mask 0, the
+// vertex array, the textures bound to units 0-7 and to the pre-pass's three units, and the uniform
+// buffer binding; the engine's scissor and masks do not reach the pass.
 // Textures and programs they create belong to the RsaaPass object.
 #pragma once
 
@@ -78,7 +95,19 @@ struct RsaaSettings {
   // 39.0), a cause not found yet, so it is not the default.
   std::string prepass = "jittered";
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
+  // Where the shaders find the pass's resources: the pre-pass's three textures at units
+  // prepass_first_unit to +2, the uniform block (shaders/rsaa_uniforms.glsl) at uniform_binding.
+  // The post-process, the pass's own program, uses units 0-7. Checked against the driver's limits.
+  int prepass_first_unit = 13;
+  int uniform_binding = 13;
 };
+
+// The #define lines that configure shaders/rsaa_prepass.glsl and rsaa_post.glsl for `settings`,
+// `sample_count` subsamples and the jittered or the multisample pre-pass. Needs no GL.
+std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass);
+// A file of shaders/ ("rsaa_prepass.glsl", "rsaa_post.glsl", "rsaa_post.hlsl", ...) with its
+// #include lines replaced by the included text: one self-contained text. Needs no GL.
+std::string rsaa_shader_file(const std::string& name);
 
 // The engine's 1x frame (formats above). inverse_projection is that of the unjittered camera.
 struct RsaaFrame {
@@ -124,6 +153,11 @@ class RsaaPass {
   RsaaPass& operator=(RsaaPass&&) noexcept;
 
   void render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry);
+  // The pre-pass drawn by the engine's own program, which includes prepass_glsl() (above).
+  void render_subsamples_with_own_shaders(const RsaaFrame& frame, const std::function<void()>& draw);
+  // The text an engine's pre-pass stages include after #version: this pass's defines, then
+  // rsaa_prepass.glsl with its includes expanded.
+  std::string prepass_glsl() const;
   // Writes the anti-aliased colour into `output` (RGBA16F, the frame's size), and the mask into
   // `mask_output` (R32UI) when settings.output_mask.
   void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
@@ -136,6 +170,9 @@ class RsaaPass {
 
  private:
   struct Objects;  // GL objects, defined in rsaa_pass.cpp
+  void write_frame_uniforms(const RsaaFrame& frame) const;
+  // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
+  void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
   RsaaSettings settings_;
   SamplePattern pattern_;
   bool multisample_ = false;

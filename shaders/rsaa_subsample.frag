@@ -1,11 +1,7 @@
-// RSAA pre-pass: compares the surface seen by a subsample with the one seen by the pixel centre
-// (from the 1x G-buffer) and stores the compressed similarity code. Two ways to run it:
-//   jittered (default): drawn once per subsample with the image jittered so that the subsample
-//     lands on the pixel centre; the pass packs four subsamples per texel (it writes all four
-//     channels and masks the others);
-//   RSAA_PREPASS_MSAA: one draw into a multisample target whose sample positions are the
-//     pattern's, the shader run per sample (gl_SampleID = subsample index).
-#include "rsaa_common.glsl"
+// The runtime's own RSAA pre-pass fragment shader (after scene.vert and scene.geom, which gives
+// the exact face normal): the engine-facing functions of rsaa_prepass.glsl, called as an engine
+// would. Jittered: drawn once per subsample; RSAA_PREPASS_MSAA: once, run per sample.
+#include "rsaa_prepass.glsl"
 
 in FragmentData {
   vec3 view_position;
@@ -16,60 +12,15 @@ in FragmentData {
   flat vec3 face_normal;
 } f_in;
 
-uniform usampler2D u_centre_normal;
-uniform usampler2D u_centre_primitive;
-uniform sampler2D u_centre_depth;
-uniform mat4 u_inverse_projection;  // unjittered
-uniform vec2 u_viewport;
-uniform uint u_primitive_base;
-#ifdef RSAA_PREPASS_MSAA
-uniform ivec2 u_neighbours[RSAA_SAMPLE_COUNT];  // nearest outside pixel per subsample, window space
-#else
-uniform ivec2 u_neighbour;  // nearest outside pixel of this subsample, window space
-#endif
-uniform float u_threshold;
+uniform uint u_primitive_base;  // first primitive id of this draw in the centre primitive target
 
 layout(location = 0) out uvec4 o_code;
 
-vec3 centre_position(ivec2 pixel) {
-  return rsaa_view_position(vec2(pixel) + 0.5, texelFetch(u_centre_depth, pixel, 0).x,
-                            u_inverse_projection, u_viewport);
-}
-
 void main() {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  // Shortcut: the triangle that covers this subsample also covers the centre.
-  if (texelFetch(u_centre_primitive, pixel, 0).x == u_primitive_base + uint(gl_PrimitiveID) + 1u) {
-    o_code = uvec4(1u);  // decodes to 0
-    return;
-  }
-  uvec2 centre_normal = texelFetch(u_centre_normal, pixel, 0).xy;
-  if (!rsaa_is_surface(centre_normal)) {
-    o_code = uvec4(RSAA_CODE_MAX);  // a surface subsample in a background pixel: different
-    return;
-  }
 #ifdef RSAA_PREPASS_MSAA
-  vec3 ps = interpolateAtSample(f_in.view_position, gl_SampleID);
-  ivec2 neighbour_step = u_neighbours[gl_SampleID];
+  vec3 position = interpolateAtSample(f_in.view_position, gl_SampleID);
 #else
-  vec3 ps = f_in.view_position;
-  ivec2 neighbour_step = u_neighbour;
+  vec3 position = f_in.view_position;
 #endif
-  vec3 ns = f_in.face_normal;
-  float similarity = rsaa_similarity(ps, ns, centre_position(pixel), rsaa_decode_normal(centre_normal));
-#if RSAA_AUTH == 2
-  // Pre-pass authentication (paper section 2.4): a subsample that looks different from the
-  // centre but even more different from its nearest outside pixel joins the similar cluster.
-  ivec2 outside = pixel + neighbour_step;
-  if (similarity > 0.5 * u_threshold && all(greaterThanEqual(outside, ivec2(0))) &&
-      all(lessThan(outside, ivec2(u_viewport)))) {
-    uvec2 outside_normal = texelFetch(u_centre_normal, outside, 0).xy;
-    if (rsaa_is_surface(outside_normal)) {
-      float to_outside = rsaa_similarity(ps, ns, centre_position(outside),
-                                         rsaa_decode_normal(outside_normal));
-      if (to_outside > similarity) similarity = 0.0;
-    }
-  }
-#endif
-  o_code = uvec4(rsaa_encode_similarity(similarity));
+  o_code = rsaa_prepass_code(position, f_in.face_normal, u_primitive_base + uint(gl_PrimitiveID) + 1u);
 }

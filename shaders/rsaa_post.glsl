@@ -1,0 +1,125 @@
+// The RSAA post-process as an include with one entry point (SMAA-style): similarity codes ->
+// mask -> offset from the table -> one bilinear fetch of the 1x colour.
+//
+//   vec4 rsaa_resolve(ivec2 pixel, out uint mask)
+//
+// rsaa_post.frag is the fragment shader around it that RsaaPass runs; an engine may call it from
+// its own pass (a fragment or compute shader) with the same resources bound.
+//
+// Defines expected before inclusion (RsaaPass::post_glsl() writes them for a pass):
+//   RSAA_SAMPLE_COUNT, RSAA_AUTH (1 = post-pass authentication), RSAA_CODE_BITS, the similarity
+//   RSAA_PREPASS_MSAA        (optional) codes are the samples of one multisample texture
+//   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
+//                            before this file) instead of the table texture
+//   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
+//                            table, then the code textures
+//   RSAA_UNIFORM_BINDING     (13) the uniform block (rsaa_uniforms.glsl)
+//
+// The table texture (RGBA32F, 256 x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
+// offset in GL window space (+y up) and the mask's representative dissimilar subsample (post-pass
+// authentication). Codes arrive packed, four subsamples per RGBA texel: subsample i is channel
+// i % 4 of code texture i / 4; or, from the multisample pre-pass, sample i of one texture.
+#ifndef RSAA_POST_GLSL
+#define RSAA_POST_GLSL
+
+#ifndef RSAA_POST_FIRST_UNIT
+#define RSAA_POST_FIRST_UNIT 0
+#endif
+
+#include "rsaa_common.glsl"
+#include "rsaa_uniforms.glsl"
+
+#define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
+#define RSAA_ALL_SIMILAR ((1u << RSAA_SAMPLE_COUNT) - 1u)
+
+layout(binding = RSAA_POST_FIRST_UNIT) uniform sampler2D rsaa_colour;  // linear, clamp to edge
+layout(binding = RSAA_POST_FIRST_UNIT + 1) uniform usampler2D rsaa_post_centre_normal;
+layout(binding = RSAA_POST_FIRST_UNIT + 2) uniform sampler2D rsaa_post_centre_depth;
+#ifndef RSAA_TABLE_ARRAY
+layout(binding = RSAA_POST_FIRST_UNIT + 3) uniform sampler2D rsaa_table;
+#endif
+#ifdef RSAA_PREPASS_MSAA
+layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2DMS rsaa_codes_ms;
+#else
+layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2D rsaa_codes[RSAA_CODE_TEXTURES];
+#endif
+
+// The resampling offset of a mask (GL window space) and its representative dissimilar subsample.
+void rsaa_table_entry(uint mask, out vec2 offset, out int representative) {
+#ifdef RSAA_TABLE_ARRAY
+#if RSAA_TABLE_SAMPLE_COUNT != RSAA_SAMPLE_COUNT
+#error "the table include is for another sample count than RSAA_SAMPLE_COUNT"
+#endif
+  offset = rsaa_offsets[mask];
+  // Listing 3 of the paper: the dissimilar subsample farthest from the centre (the later on ties).
+  representative = 0;
+  float farthest = -1.0;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    float d = dot(rsaa_sample_positions[i], rsaa_sample_positions[i]);
+    if ((mask & (1u << i)) == 0u && d >= farthest) representative = i, farthest = d;
+  }
+#else
+  vec4 entry = texelFetch(rsaa_table, ivec2(mask & 255u, mask >> 8u), 0);
+  offset = entry.xy;
+  representative = int(entry.z);
+#endif
+}
+
+vec3 rsaa_post_position(ivec2 pixel) {
+  return rsaa_view_position(vec2(pixel) + 0.5, texelFetch(rsaa_post_centre_depth, pixel, 0).x,
+                            rsaa_inverse_projection, rsaa_viewport);
+}
+
+vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
+  uint codes[RSAA_SAMPLE_COUNT];
+#ifndef RSAA_PREPASS_MSAA
+  uvec4 code_texels[RSAA_CODE_TEXTURES];
+  for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = texelFetch(rsaa_codes[k], pixel, 0);
+#endif
+  bool any_different = false, any_uncovered = false;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+#ifdef RSAA_PREPASS_MSAA
+    codes[i] = texelFetch(rsaa_codes_ms, pixel, i).x;
+#else
+    codes[i] = code_texels[i / 4][i % 4];
+#endif
+    any_different = any_different || codes[i] > 1u;
+    any_uncovered = any_uncovered || codes[i] == 0u;
+  }
+  vec4 colour = texelFetch(rsaa_colour, pixel, 0);
+  mask = RSAA_ALL_SIMILAR;
+  // Most pixels: every subsample on the centre's surface (code 1 = similarity 0), or a background
+  // pixel whose subsamples see no surface (code 0) or its surface. Their colour stays.
+  if (!any_different && !any_uncovered) return colour;
+  uvec2 centre_normal = texelFetch(rsaa_post_centre_normal, pixel, 0).xy;
+  bool centre_is_surface = rsaa_is_surface(centre_normal);
+  if (!any_different && !centre_is_surface) return colour;
+
+  float similarity[RSAA_SAMPLE_COUNT];
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) similarity[i] = rsaa_decode_similarity(codes[i], centre_is_surface);
+  float split;
+  mask = rsaa_classify(similarity, rsaa_threshold, split);
+  if (mask == RSAA_ALL_SIMILAR) return colour;
+  vec2 offset;
+  int representative;
+  rsaa_table_entry(mask, offset, representative);
+#if RSAA_AUTH == 1
+  // Post-pass authentication (paper section 2.4): if the outside pixel nearest to the
+  // representative dissimilar subsample differs from the centre much more than that subsample
+  // does, the fetch would blend in a surface the pixel does not show: halve the offset.
+  ivec2 outside = clamp(pixel + rsaa_neighbours[representative].xy, ivec2(0), ivec2(rsaa_viewport) - 1);
+  uvec2 outside_normal = texelFetch(rsaa_post_centre_normal, outside, 0).xy;
+  if (centre_is_surface && rsaa_is_surface(outside_normal)) {
+    float to_outside = rsaa_similarity(rsaa_post_position(pixel), rsaa_decode_normal(centre_normal),
+                                       rsaa_post_position(outside), rsaa_decode_normal(outside_normal));
+    if (to_outside - similarity[representative] > similarity[representative]) offset *= 0.5;
+  }
+#endif
+  // A zero offset keeps the texel exactly (a filtered fetch at the texel centre may not).
+  if (offset == vec2(0.0)) return colour;
+  vec4 fetched = texture(rsaa_colour, (vec2(pixel) + 0.5 + offset) / rsaa_viewport);
+  // As the CPU reference: a NaN or infinite neighbour never spreads into this pixel.
+  return any(isnan(fetched)) || any(isinf(fetched)) ? colour : fetched;
+}
+
+#endif  // RSAA_POST_GLSL

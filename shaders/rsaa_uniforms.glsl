@@ -1,0 +1,24 @@
+// The one uniform block of the RSAA pass, read by the pre-pass and the post-process. RsaaPass
+// fills it (runtime/rsaa_pass.cpp, struct RsaaUniformBlock, the same std140 layout) and binds it
+// at RSAA_UNIFORM_BINDING before it calls the engine's draw or runs the post-process; an engine
+// using these shaders without the runtime fills it itself.
+//
+// Defines expected before inclusion: RSAA_SAMPLE_COUNT; optional RSAA_UNIFORM_BINDING (13).
+#ifndef RSAA_UNIFORMS_GLSL
+#define RSAA_UNIFORMS_GLSL
+
+#ifndef RSAA_UNIFORM_BINDING
+#define RSAA_UNIFORM_BINDING 13
+#endif
+
+layout(std140, binding = RSAA_UNIFORM_BINDING) uniform RsaaUniforms {
+  mat4 rsaa_inverse_projection;  // of the unjittered camera: window position + depth -> view space
+  vec2 rsaa_viewport;            // the frame's width and height in pixels
+  vec2 rsaa_jitter_ndc;          // jittered pre-pass: the image translation of this draw (NDC)
+  float rsaa_threshold;          // similarity above which a subsample is dissimilar
+  int rsaa_subsample;            // jittered pre-pass: the subsample drawn; -1 otherwise
+  // .xy: the step from a pixel to the outside pixel nearest subsample i, window space (+y up)
+  ivec4 rsaa_neighbours[RSAA_SAMPLE_COUNT];
+};
+
+#endif  // RSAA_UNIFORMS_GLSL
