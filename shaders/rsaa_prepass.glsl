@@ -9,8 +9,8 @@
 // rsaa_jitter() shifts the image so that the subsample being drawn lands on the pixel centre (the
 // jittered pre-pass, one draw per subsample); it leaves the position alone in the multisample
 // pre-pass (RSAA_PREPASS_MSAA: one draw, the fragment shader run per sample). There,
-// view_position must be evaluated at the sample: declare the input `sample in`, or pass
-// interpolateAtSample(input, gl_SampleID).
+// view_position must be evaluated at the sample: pass interpolateAtSample(input, gl_SampleID)
+// (or declare the output and the input `sample`).
 //
 // Defines expected before inclusion (RsaaPass::prepass_glsl() writes them for a pass):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (0, 1, 2), RSAA_CODE_BITS, the similarity (rsaa_common.glsl)

@@ -1,6 +1,8 @@
 // The drop-in pass's contract with an engine (runtime/rsaa_pass.h): a missing or wrong frame
 // texture is an error naming the field, a callback that draws with another program is an
 // error, and the engine's GL state is as it was after both calls.
+#include <functional>
+
 #include <gtest/gtest.h>
 
 #include "runtime/gl_context.h"
@@ -79,6 +81,125 @@ void run_pre_pass(RsaaPass& pass, const RsaaFrame& frame, const GpuScene& gpu, c
   });
 }
 
+// An engine's pre-pass program: its own vertex stage (the scene's attribute 0 and camera, no
+// geometry stage) with rsaa_jitter(), and a fragment stage calling rsaa_prepass_code() with the
+// face normal from derivatives.
+gl::Program engine_prepass_program(const RsaaPass& pass) {
+  const std::string prepass = pass.prepass_glsl();
+  const std::string vertex = "#define RSAA_INCLUDE_FS 0\n" + prepass + R"(
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_view, u_projection;
+out vec3 v_view_position;
+void main() {
+  vec4 view = u_view * vec4(a_position, 1.0);
+  v_view_position = view.xyz;
+  gl_Position = rsaa_jitter(u_projection * view);
+})";
+  const std::string fragment = prepass + R"(
+in vec3 v_view_position;
+uniform uint u_primitive_base;
+layout(location = 0) out uvec4 o_code;
+void main() {
+#ifdef RSAA_PREPASS_MSAA
+  vec3 position = interpolateAtSample(v_view_position, gl_SampleID);  // at the sample shaded
+#else
+  vec3 position = v_view_position;
+#endif
+  o_code = rsaa_prepass_code(position, rsaa_face_normal(v_view_position),
+                             u_primitive_base + uint(gl_PrimitiveID) + 1u);
+})";
+  return gl::make_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "", "engine pre-pass");
+}
+
+// The masks of the default scene, pre-pass drawn by the pass's program or by an engine program.
+struct MaskRun {
+  std::vector<std::uint32_t> own_program, engine_program;
+  std::uint32_t all_similar;
+};
+MaskRun masks_both_ways(const std::string& scene_name, RsaaSettings settings, int width, int height) {
+  const Scene scene = load_scene(scene_name);
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), width, height);
+  SceneRenderer renderer;
+  const RsaaTargets targets(width, height);
+  renderer.draw_gbuffer(gpu, view, targets);
+  settings.output_mask = true;
+  RsaaPass pass(settings, width, height);
+  const RsaaFrame frame = targets.frame(view.inverse_projection());
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+  const gl::Texture masks = gl::make_texture_2d(GL_R32UI, width, height);
+  MaskRun run;
+  run.all_similar = (1u << pass.pattern().size()) - 1u;
+  run_pre_pass(pass, frame, gpu, view);
+  pass.resolve(frame, output.get(), masks.get());
+  run.own_program = read_back_uints(masks.get(), width, height);
+  const gl::Program engine = engine_prepass_program(pass);
+  pass.render_subsamples_with_own_shaders(frame, [&] {
+    glUseProgram(engine.get());
+    SceneRenderer::draw(gpu, view, glm::vec2(0.0f), engine.get());
+  });
+  pass.resolve(frame, output.get(), masks.get());
+  run.engine_program = read_back_uints(masks.get(), width, height);
+  return run;
+}
+
+TEST_F(RsaaPassApi, AnEnginesOwnShadersGiveThePassProgramsMasks) {
+  RsaaSettings multisample;
+  multisample.pattern = "gl4x";
+  multisample.prepass = "msaa";
+  for (const auto& [scene, settings] : {std::pair{"builtin:default", RsaaSettings{}},
+                                        std::pair{"builtin:edges", RsaaSettings{}},
+                                        std::pair{"builtin:default", multisample}}) {
+    const MaskRun run = masks_both_ways(scene, settings, 160, 120);
+    int edges = 0, differing = 0;
+    for (std::size_t i = 0; i < run.own_program.size(); ++i) {
+      edges += run.own_program[i] != run.all_similar;
+      differing += run.own_program[i] != run.engine_program[i];
+    }
+    EXPECT_GT(edges, 200) << scene;
+    // The face normal from derivatives differs from the geometry stage's in the last bits; only
+    // subsamples whose similarity sits on the threshold may change side.
+    EXPECT_LE(differing, edges / 100) << scene << ": " << differing << " of " << edges << " edge pixels differ";
+  }
+}
+
+TEST_F(RsaaPassApi, AnEngineProgramWithoutTheBlockOrThatRebindsAUnitIsAnError) {
+  const RsaaTargets targets(kWidth, kHeight);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  const RsaaFrame frame = targets.frame(glm::mat4(1.0f));
+  SceneRenderer renderer;
+  const auto logic_error_of = [&](const std::function<void()>& draw) -> std::string {
+    try {
+      pass.render_subsamples_with_own_shaders(frame, draw);
+    } catch (const std::logic_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(logic_error_of([&] { glUseProgram(renderer.shade_program()); }).find("has no RsaaUniforms block"),
+            std::string::npos);
+  const gl::Program engine = engine_prepass_program(pass);
+  const gl::Texture material = gl::make_texture_2d(GL_RGBA8, 4, 4);
+  EXPECT_NE(logic_error_of([&] {
+              glUseProgram(engine.get());
+              glBindTextureUnit(14, material.get());
+            }).find("rebound texture unit 14"),
+            std::string::npos);
+  EXPECT_EQ(logic_error_of([&] { glUseProgram(engine.get()); }), "");
+  gl::check("after the refused draws");
+}
+
+TEST_F(RsaaPassApi, ResourceSlotsOutsideTheDriversLimitsAreRefused) {
+  RsaaSettings settings;
+  settings.prepass_first_unit = 1000;
+  EXPECT_NE(invalid_argument_of([&] { RsaaPass(settings, kWidth, kHeight); }).find("prepass_first_unit 1000"),
+            std::string::npos);
+  settings = RsaaSettings{};
+  settings.uniform_binding = -1;
+  EXPECT_NE(invalid_argument_of([&] { RsaaPass(settings, kWidth, kHeight); }).find("uniform_binding -1"),
+            std::string::npos);
+}
+
 TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   const Scene scene = load_scene("builtin:default");
   const GpuScene gpu(scene);
@@ -100,6 +221,16 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glDepthMask(GL_FALSE);
   glDepthFunc(GL_GREATER);
   glBindTextureUnit(2, engine_texture.get());
+  glBindTextureUnit(13, engine_texture.get());  // the pre-pass's first unit
+  gl::Buffer engine_buffer = [] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, 256, nullptr, 0);
+    return gl::Buffer(b);
+  }();
+  glBindBufferRange(GL_UNIFORM_BUFFER, 13, engine_buffer.get(), 0, 128);  // the pass's binding
+  glEnable(GL_SAMPLE_SHADING);
+  glMinSampleShading(0.25f);
 
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
   const RsaaFrame frame = targets.frame(view.inverse_projection());
@@ -127,12 +258,25 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(depth_mask, GL_FALSE);
   EXPECT_EQ(depth_func, GL_GREATER);
   EXPECT_EQ(GLuint(texture), engine_texture.get());
+  GLint unit13 = 0, uniform_buffer = 0;
+  GLint64 uniform_size = 0;
+  GLfloat min_sample_shading = 0.0f;
+  glGetIntegeri_v(GL_TEXTURE_BINDING_2D, 13, &unit13);
+  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 13, &uniform_buffer);
+  glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, 13, &uniform_size);
+  glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &min_sample_shading);
+  EXPECT_EQ(GLuint(unit13), engine_texture.get());
+  EXPECT_EQ(GLuint(uniform_buffer), engine_buffer.get());
+  EXPECT_EQ(uniform_size, 128);
+  EXPECT_TRUE(glIsEnabled(GL_SAMPLE_SHADING));
+  EXPECT_EQ(min_sample_shading, 0.25f);
 
   // The engine's scissor and masks did not reach the pass: the same frame without them gives
   // the same image.
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
+  glDisable(GL_SAMPLE_SHADING);
   const gl::Texture clean_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   run_pre_pass(pass, frame, gpu, view);
   pass.resolve(frame, clean_output.get());

@@ -58,10 +58,8 @@ inline std::string read_text_file(const std::string& path) {
   return text.str();
 }
 
-// Compiles each stage (its source follows "#version 450 core") and attaches it to `program`;
-// then `before_link(program)` (e.g. transform feedback varyings) and links. Throws with the log.
-template <typename BeforeLink>
-GLuint link_program(const std::vector<std::pair<GLenum, std::string>>& stages, BeforeLink before_link) {
+// Compiles each stage (its source follows "#version 450 core") and links. Throws with the log.
+inline GLuint make_program(const std::vector<std::pair<GLenum, std::string>>& stages) {
   const GLuint program = glCreateProgram();
   char log[4096] = "";
   for (const auto& [stage, source] : stages) {
@@ -77,17 +75,12 @@ GLuint link_program(const std::vector<std::pair<GLenum, std::string>>& stages, B
     glAttachShader(program, shader);
     glDeleteShader(shader);
   }
-  before_link(program);
   glLinkProgram(program);
   GLint linked = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &linked);
   glGetProgramInfoLog(program, sizeof log, nullptr, log);
   if (!linked) throw std::runtime_error(std::string("program link error: ") + log);
   return program;
-}
-
-inline GLuint make_program(const std::vector<std::pair<GLenum, std::string>>& stages) {
-  return link_program(stages, [](GLuint) {});
 }
 
 // A vertex array reading float attributes: {location, buffer binding, components, first float}.
