@@ -294,6 +294,13 @@ std::string RsaaPass::prepass_glsl() const {
          rsaa_shader_defines(settings_, pattern_.size(), multisample_) + rsaa_shader_file("rsaa_prepass.glsl");
 }
 
+std::vector<GlName> RsaaPass::code_textures() const {
+  if (multisample_) return {gl_->codes_ms.get()};
+  std::vector<GlName> names;
+  for (const gl::Texture& t : gl_->codes) names.push_back(t.get());
+  return names;
+}
+
 void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
   RsaaUniformHead head{};
   std::copy_n(glm::value_ptr(frame.inverse_projection), 16, head.inverse_projection);

@@ -61,6 +61,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -163,6 +164,11 @@ class RsaaPass {
   void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
 
   const SamplePattern& pattern() const { return pattern_; }
+  // The similarity codes of the last pre-pass, for an engine that runs its own post-process
+  // (shaders/rsaa_post.glsl or .hlsl): RGBA 8/16/32-bit unsigned textures, subsample i in
+  // channel i % 4 of texture i / 4; or, for the multisample pre-pass, one texture whose sample i
+  // is subsample i.
+  std::vector<GlName> code_textures() const;
   // True when the pre-pass is one multisample draw (settings.prepass, resolved for this driver).
   bool multisample_prepass() const { return multisample_; }
   // Bytes per pixel of the similarity codes this pass keeps.

@@ -8,7 +8,8 @@ packages=(
   nlohmann-json3-dev                    # table files (JSON)
   libcli11-dev                          # the rsaa command line
   libgtest-dev libgmock-dev libbenchmark-dev
-  glslang-tools                         # compile-check generated GLSL/HLSL tables
+  glslang-tools                         # compile-check generated GLSL/HLSL tables and shaders
+  spirv-cross                           # tests: the HLSL post-process translated to GLSL and run
   libopencv-dev libopencv-contrib-dev   # image metrics (PSNR, SSIM in quality), plots
   libglm-dev libopenimageio-dev openimageio-tools
   libglfw3-dev libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri

@@ -1,0 +1,190 @@
+// The RSAA post-process in HLSL (Direct3D conventions), beside the HLSL tables: similarity codes
+// -> mask -> offset from the table -> one bilinear fetch of the 1x colour. The same algorithm as
+// rsaa_post.glsl and rsaa_common.glsl (which document each step); only the conventions differ.
+//
+//   float4 RsaaResolve(int2 pixel)         the entry point, for the engine's own pass
+//   float4 RsaaPostPS(float4 position : SV_Position) : SV_Target   a full-screen pixel shader
+//
+// Include a table first (tables/P.hlsl: rsaa_sample_positions, rsaa_offsets, in pixel space with
+// +y down, as SV_Position), then define and include:
+//   RSAA_SAMPLE_COUNT      subsamples (must equal the table's RSAA_TABLE_SAMPLE_COUNT)
+//   RSAA_AUTH              0 none, 1 post-pass authentication (2 is done in the pre-pass: 0 here)
+//   RSAA_CODE_BITS         8, 16 or 32: bits of a stored similarity code
+//   RSAA_SIMILARITY_DEPTH / RSAA_SIMILARITY_SADP_PLANE   (optional) as in rsaa_common.glsl
+// Resources (registers overridable by defining RSAA_REGISTER_*):
+//   t0 colour (linear), t1 centre normal (uint2: rsaa_encode_normal, 0 = background), t2 centre
+//   depth (0 near .. 1 far), t3.. the codes: subsample i in channel i % 4 of texture i / 4, as
+//   rsaa_prepass.glsl writes them; s0 a linear clamp-to-edge sampler; b0 the constants below,
+//   with rsaa_inverse_projection such that mul(rsaa_inverse_projection, ndc) is view space
+//   (ndc.y up, ndc.z = depth).
+#ifndef RSAA_POST_HLSL
+#define RSAA_POST_HLSL
+
+#ifndef RSAA_TABLE_SAMPLE_COUNT
+#error "include a table (tables/P.hlsl) before rsaa_post.hlsl"
+#endif
+#if RSAA_TABLE_SAMPLE_COUNT != RSAA_SAMPLE_COUNT
+#error "the table is for another sample count than RSAA_SAMPLE_COUNT"
+#endif
+#ifndef RSAA_AUTH
+#define RSAA_AUTH 0
+#endif
+#ifndef RSAA_CODE_BITS
+#define RSAA_CODE_BITS 8
+#endif
+#define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
+#define RSAA_ALL_SIMILAR ((1u << RSAA_SAMPLE_COUNT) - 1u)
+
+#ifndef RSAA_REGISTER_COLOUR
+#define RSAA_REGISTER_COLOUR t0
+#define RSAA_REGISTER_NORMAL t1
+#define RSAA_REGISTER_DEPTH t2
+#define RSAA_REGISTER_CODES t3
+#define RSAA_REGISTER_SAMPLER s0
+#define RSAA_REGISTER_CONSTANTS b0
+#endif
+
+Texture2D<float4> rsaa_colour : register(RSAA_REGISTER_COLOUR);
+Texture2D<uint2> rsaa_centre_normal : register(RSAA_REGISTER_NORMAL);
+Texture2D<float> rsaa_centre_depth : register(RSAA_REGISTER_DEPTH);
+Texture2D<uint4> rsaa_codes[RSAA_CODE_TEXTURES] : register(RSAA_REGISTER_CODES);
+SamplerState rsaa_linear_clamp : register(RSAA_REGISTER_SAMPLER);
+
+cbuffer RsaaConstants : register(RSAA_REGISTER_CONSTANTS) {
+  float4x4 rsaa_inverse_projection;
+  float2 rsaa_viewport;  // width, height in pixels
+  float rsaa_threshold;  // SADP units, or percent of depth (RSAA_SIMILARITY_DEPTH)
+};
+
+// ---- normals, codes and similarity (rsaa_common.glsl)
+static const float RSAA_NORMAL_SCALE = 16383.0;
+
+float3 RsaaDecodeNormal(uint2 c) {
+  float2 xy = float2(c) / RSAA_NORMAL_SCALE - 2.0;
+  return float3(xy, sqrt(max(0.0, 1.0 - dot(xy, xy))));
+}
+
+bool RsaaIsSurface(uint2 encoded_normal) { return encoded_normal.x != 0u; }
+
+float3 RsaaViewPosition(int2 pixel) {
+  float2 uv = (float2(pixel) + 0.5) / rsaa_viewport;
+  float4 ndc = float4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, rsaa_centre_depth.Load(int3(pixel, 0)), 1.0);
+  float4 view = mul(rsaa_inverse_projection, ndc);
+  return view.xyz / view.w;
+}
+
+float RsaaSadp(float3 r12, float3 n1, float3 n2) {
+  float largest = max(abs(r12.x), max(abs(r12.y), abs(r12.z)));
+  if (!(largest > 1e-12)) return isnan(largest) ? largest : 0.0;
+  float3 u = r12 / largest;
+  return (abs(dot(n1, u)) + abs(dot(n2, u))) / length(u);
+}
+
+float RsaaDepthDifference(float3 p1, float3 p2) {
+  float z1 = abs(p1.z), z2 = abs(p2.z);
+  return 100.0 * abs(z1 - z2) / max(min(z1, z2), 1e-20);
+}
+
+float RsaaPlaneGap(float3 p1, float3 n1, float3 p2, float3 n2) {
+  float d1 = length(p1), d2 = length(p2);
+  if (!(d1 > 1e-30 && d2 > 1e-30)) return 0.0;
+  float c1 = abs(dot(n1, p2)) / d2;
+  float c2 = abs(dot(n2, p1)) / d1;
+  if (!(max(c1, c2) >= 0.05)) return 0.0;
+  float3 r = p2 - p1;
+  return c1 >= c2 ? 100.0 * abs(dot(n1, r)) / (c1 * d2) : 100.0 * abs(dot(n2, r)) / (c2 * d1);
+}
+
+#ifndef RSAA_PLANE_GAP_PERCENT
+#define RSAA_PLANE_GAP_PERCENT 1.0
+#endif
+
+float RsaaSimilarity(float3 p1, float3 n1, float3 p2, float3 n2) {
+#if defined(RSAA_SIMILARITY_DEPTH)
+  return RsaaDepthDifference(p1, p2);
+#elif defined(RSAA_SIMILARITY_SADP_PLANE)
+  float gap = RsaaPlaneGap(p1, n1, p2, n2) * (0.4 / RSAA_PLANE_GAP_PERCENT);
+  return max(RsaaSadp(p1 - p2, n1, n2), min(gap, 2.0));
+#else
+  return RsaaSadp(p1 - p2, n1, n2);
+#endif
+}
+
+#if RSAA_CODE_BITS == 32
+static const float RSAA_CODE_SCALE = 1073741824.0;  // 2^30
+#else
+static const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
+#endif
+
+float RsaaDecodeSimilarity(uint code, bool centre_is_surface) {
+  if (code == 0u) return centre_is_surface ? 1.0e9 : 0.0;
+  float stored = float(code - 1u) / RSAA_CODE_SCALE;
+#ifdef RSAA_SIMILARITY_DEPTH
+  return 0.05 * (exp2(8.0 * stored) - 1.0);
+#else
+  return stored;
+#endif
+}
+
+// The step from a pixel to the outside pixel nearest a subsample (core's outside_pixel_towards):
+// the position scaled to the unit square's border, rounded half away from zero.
+int2 RsaaOutsideStep(float2 sample_position) {
+  float scale = max(abs(sample_position.x), abs(sample_position.y));
+  if (!(scale > 0.0)) return int2(1, 0);
+  float2 s = sample_position / scale;
+  return int2(sign(s) * floor(abs(s) + 0.5));
+}
+
+// ---- the post-process (rsaa_post.glsl)
+float4 RsaaResolve(int2 pixel) {
+  uint codes[RSAA_SAMPLE_COUNT];
+  bool any_different = false, any_uncovered = false;
+  [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    codes[i] = rsaa_codes[i / 4].Load(int3(pixel, 0))[i % 4];
+    any_different = any_different || codes[i] > 1u;
+    any_uncovered = any_uncovered || codes[i] == 0u;
+  }
+  float4 colour = rsaa_colour.Load(int3(pixel, 0));
+  if (!any_different && !any_uncovered) return colour;
+  uint2 centre_normal = rsaa_centre_normal.Load(int3(pixel, 0));
+  bool centre_is_surface = RsaaIsSurface(centre_normal);
+  if (!any_different && !centre_is_surface) return colour;
+
+  // Classification (paper section 2.2): one k-means step.
+  float similarity[RSAA_SAMPLE_COUNT];
+  float maxsim = 0.0;
+  [unroll] for (int j = 0; j < RSAA_SAMPLE_COUNT; ++j) {
+    similarity[j] = RsaaDecodeSimilarity(codes[j], centre_is_surface);
+    maxsim = max(maxsim, similarity[j]);
+  }
+  if (!(maxsim > rsaa_threshold)) return colour;
+  float split = 0.5 * maxsim + 0.5 * rsaa_threshold;
+  uint mask = 0u;
+  int representative = 0;  // Listing 3: the dissimilar subsample farthest from the centre
+  float farthest = -1.0;
+  [unroll] for (int k = 0; k < RSAA_SAMPLE_COUNT; ++k) {
+    float d = dot(rsaa_sample_positions[k], rsaa_sample_positions[k]);
+    if (similarity[k] <= split) mask |= 1u << k;
+    else if (d >= farthest) { representative = k; farthest = d; }
+  }
+  float2 offset = rsaa_offsets[mask];
+#if RSAA_AUTH == 1
+  int2 outside = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[representative]), int2(0, 0),
+                       int2(rsaa_viewport) - 1);
+  uint2 outside_normal = rsaa_centre_normal.Load(int3(outside, 0));
+  if (centre_is_surface && RsaaIsSurface(outside_normal)) {
+    float to_outside = RsaaSimilarity(RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal),
+                                      RsaaViewPosition(outside), RsaaDecodeNormal(outside_normal));
+    if (to_outside - similarity[representative] > similarity[representative]) offset *= 0.5;
+  }
+#endif
+  if (all(offset == float2(0.0, 0.0))) return colour;
+  float4 fetched = rsaa_colour.SampleLevel(rsaa_linear_clamp, (float2(pixel) + 0.5 + offset) / rsaa_viewport, 0.0);
+  return any(isnan(fetched)) || any(isinf(fetched)) ? colour : fetched;
+}
+
+float4 RsaaPostPS(float4 position : SV_Position) : SV_Target {
+  return RsaaResolve(int2(position.xy));
+}
+
+#endif  // RSAA_POST_HLSL

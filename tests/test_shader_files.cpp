@@ -1,0 +1,262 @@
+// The shader files an engine includes (shaders/rsaa_prepass.glsl, rsaa_post.glsl, rsaa_post.hlsl):
+// usable through a standard include mechanism (GL_GOOGLE_include_directive, glslangValidator -I)
+// and as one expanded text; the HLSL post-process compiles for every table and option and,
+// compiled to SPIR-V (glslangValidator -D) and back to GLSL (spirv-cross), gives the image of the
+// GLSL post-process on a real frame: same algorithm, Direct3D's conventions handled right.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "runtime/fullscreen.h"
+#include "runtime/gl_objects.h"
+#include "runtime/render.h"
+#include "runtime/rsaa_pass.h"
+#include "runtime/scene.h"
+#include "runtime/scene_renderer.h"
+#include "runtime/shader_library.h"
+#include "tests/gl_test.h"
+#include "tests/test_util.h"
+
+namespace rsaa {
+namespace {
+
+const std::string kShaders = std::string(RSAA_SOURCE_DIR) + "/shaders";
+const std::string kTables = std::string(RSAA_SOURCE_DIR) + "/tables";
+
+struct Configuration {
+  RsaaSettings settings;
+  int samples;
+  bool multisample;
+};
+
+std::vector<Configuration> configurations() {
+  RsaaSettings depth_auth2, sadp_auth1, plane;
+  depth_auth2.similarity = "depth", depth_auth2.auth = 2, depth_auth2.code_bits = 16;
+  sadp_auth1.similarity = "sadp", sadp_auth1.auth = 1, sadp_auth1.code_bits = 32;
+  return {{plane, 8, false}, {depth_auth2, 4, true}, {sadp_auth1, 16, false}};
+}
+
+// Compiles `text` as a `stage` shader with glslangValidator; returns its output when it fails.
+std::string glslang_errors(const std::string& stage, const std::string& text, const std::string& flags = "") {
+  test::TempDir dir;
+  test::write_text(dir.file("t." + stage), text);
+  const auto r = test::run_command("glslangValidator " + flags + " " + dir.file("t." + stage));
+  return r.exit_code == 0 ? "" : r.output + "\n--- source:\n" + text;
+}
+
+const char* kIncludeHeader = "#version 450\n#extension GL_GOOGLE_include_directive : require\n";
+
+TEST(ShaderFiles, ThePrePassAndPostProcessCompileThroughAnIncludeDirective) {
+  // (-l: glslangValidator resolves includes when it links, not when it only validates)
+  const std::string includes = "-l -I" + kShaders + " -I" + kTables;
+  for (const Configuration& c : configurations()) {
+    const std::string defines = rsaa_shader_defines(c.settings, c.samples, c.multisample);
+    EXPECT_EQ(glslang_errors("vert", kIncludeHeader + defines + "#define RSAA_INCLUDE_FS 0\n"
+                                     "#include \"rsaa_prepass.glsl\"\n"
+                                     "layout(location = 0) in vec3 p;\n"
+                                     "void main() { gl_Position = rsaa_jitter(vec4(p, 1.0)); }\n",
+                             includes),
+              "");
+    EXPECT_EQ(glslang_errors("frag", kIncludeHeader + defines + "#include \"rsaa_prepass.glsl\"\n"
+                                     "in vec3 v;\nlayout(location = 0) out uvec4 o;\n"
+                                     "void main() { o = rsaa_prepass_code(v, rsaa_face_normal(v), 1u); }\n",
+                             includes),
+              "");
+    const std::string post_main = "layout(location = 0) out vec4 o;\n"
+                                  "void main() { uint m; o = rsaa_resolve(ivec2(gl_FragCoord.xy), m); }\n";
+    EXPECT_EQ(glslang_errors("frag", kIncludeHeader + defines + "#include \"rsaa_post.glsl\"\n" + post_main, includes), "");
+    // Offsets from a table include instead of the table texture.
+    const std::string table = c.samples == 4 ? "d3d4x" : c.samples == 8 ? "d3d8x" : "d3d16x";
+    EXPECT_EQ(glslang_errors("frag", kIncludeHeader + defines + "#define RSAA_TABLE_ARRAY\n#include \"" + table +
+                                         ".glsl\"\n#include \"rsaa_post.glsl\"\n" + post_main,
+                             includes),
+              "");
+    // The same as one expanded text, nothing to include.
+    EXPECT_EQ(glslang_errors("frag", "#version 450\n" + defines + rsaa_shader_file("rsaa_post.glsl") + post_main), "");
+  }
+}
+
+TEST(ShaderFiles, AWrongTableForTheSampleCountIsACompileError) {
+  RsaaSettings settings;
+  const std::string errors =
+      glslang_errors("frag", kIncludeHeader + rsaa_shader_defines(settings, 8, false) +
+                                 "#define RSAA_TABLE_ARRAY\n#include \"d3d4x.glsl\"\n#include \"rsaa_post.glsl\"\n"
+                                 "void main() {}\n",
+                     "-l -I" + kShaders + " -I" + kTables);
+  EXPECT_NE(errors.find("another sample count"), std::string::npos) << errors;
+}
+
+// Compiles the HLSL post-process for `table` (a file of tables/) to SPIR-V (`spirv_file`); false
+// and the log when glslang refuses it.
+bool compile_hlsl_post(const test::TempDir& dir, const std::string& table, const std::string& defines,
+                       const std::string& spirv_file, std::string& log) {
+  test::write_text(dir.file("post.hlsl"), "#include \"" + table + ".hlsl\"\n#include \"rsaa_post.hlsl\"\n");
+  const auto r = test::run_command("glslangValidator -D -V -S frag -e RsaaPostPS -I" + kTables + " -I" + kShaders +
+                                   " " + defines + " -o " + spirv_file + " " + dir.file("post.hlsl"));
+  log = r.output;
+  return r.exit_code == 0;
+}
+
+TEST(HlslPostProcess, CompilesForEveryTableAndOption) {
+  test::TempDir dir;
+  for (const auto& entry : std::filesystem::directory_iterator(kTables)) {
+    if (entry.path().extension() != ".hlsl") continue;
+    const std::string table = entry.path().stem().string();
+    const std::string text = test::read_text(entry.path().string());
+    const std::size_t at = text.find("RSAA_TABLE_SAMPLE_COUNT ");
+    ASSERT_NE(at, std::string::npos) << table;
+    const int samples = std::stoi(text.substr(at + 24));
+    const std::string count = "-DRSAA_SAMPLE_COUNT=" + std::to_string(samples);
+    std::string log;
+    if (samples > 8) {
+      // Seconds per compile for a 65,536-entry table: once. (The HLSL is checked; the SPIR-V
+      // glslang writes for it is not valid: the constant array exceeds an instruction's 65,535
+      // words, a limit of SPIR-V, not of Direct3D's compilers.)
+      EXPECT_TRUE(compile_hlsl_post(dir, table, count + " -DRSAA_AUTH=1 -DRSAA_SIMILARITY_SADP_PLANE",
+                                    dir.file("post.spv"), log))
+          << table << "\n" << log;
+      continue;
+    }
+    for (const char* similarity : {"", "-DRSAA_SIMILARITY_DEPTH", "-DRSAA_SIMILARITY_SADP_PLANE"})
+      for (int auth : {0, 1})
+        for (int bits : {8, 32}) {
+          const std::string defines = count + " -DRSAA_AUTH=" + std::to_string(auth) +
+                                      " -DRSAA_CODE_BITS=" + std::to_string(bits) + " " + similarity;
+          EXPECT_TRUE(compile_hlsl_post(dir, table, defines, dir.file("post.spv"), log))
+              << table << " " << defines << "\n" << log;
+        }
+  }
+  std::string log;
+  EXPECT_FALSE(compile_hlsl_post(dir, "d3d4x", "-DRSAA_SAMPLE_COUNT=8", dir.file("post.spv"), log)) << "a table of 4 for 8 samples";
+  EXPECT_NE(log.find("another sample count"), std::string::npos) << log;
+}
+
+// A copy of a texture upside down (rows from the top, as Direct3D stores an image).
+gl::Texture upside_down(GLuint texture, GLenum format, int width, int height, GLenum filter = GL_NEAREST) {
+  gl::Texture copy = gl::make_texture_2d(format, width, height, filter);
+  const bool depth = format == GL_DEPTH_COMPONENT32F;
+  const gl::Framebuffer from = depth ? gl::make_framebuffer({}, {texture}) : gl::make_framebuffer({{texture}});
+  const gl::Framebuffer to = depth ? gl::make_framebuffer({}, {copy.get()}) : gl::make_framebuffer({{copy.get()}});
+  glBlitNamedFramebuffer(from.get(), to.get(), 0, 0, width, height, 0, height, width, 0,
+                         depth ? GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  gl::check("upside-down copy");
+  return copy;
+}
+
+// The HLSL post-process, compiled to SPIR-V and translated to GLSL by spirv-cross, run on the
+// frame the GLSL post-process resolved, as Direct3D sees it (every input upside down: rows from
+// the top; depth in [0, 1] through its inverse projection): the same image, upside down.
+// Without and with post-pass authentication (which reads depth, normals and neighbour steps).
+class HlslPostProcessOnGl : public test::GlTest, public ::testing::WithParamInterface<int> {};
+
+TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
+  constexpr int kWidth = 160, kHeight = 120;
+  RsaaSettings settings;
+  settings.auth = GetParam();
+  const Scene scene = load_scene("builtin:default");
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
+  SceneRenderer renderer;
+  const RsaaTargets targets(kWidth, kHeight);
+  renderer.draw_gbuffer(gpu, view, targets);
+  RsaaPass pass(settings, kWidth, kHeight);
+  const RsaaFrame frame = targets.frame(view.inverse_projection());
+  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) { SceneRenderer::draw(gpu, view, jitter, program); });
+  const gl::Texture glsl_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(frame, glsl_output.get());
+
+  test::TempDir dir;
+  std::string log;
+  const std::string spirv = dir.file("post.spv");
+  ASSERT_TRUE(compile_hlsl_post(dir, "d3d8x",
+                                "-DRSAA_SAMPLE_COUNT=8 -DRSAA_CODE_BITS=8 -DRSAA_SIMILARITY_SADP_PLANE -DRSAA_AUTH=" +
+                                    std::to_string(settings.auth),
+                                spirv, log))
+      << log;
+  const auto cross = test::run_command("spirv-cross --version 450 --no-es " + spirv);
+  ASSERT_EQ(cross.exit_code, 0) << cross.output;
+  std::string fragment = cross.output;
+  fragment.erase(0, fragment.find('\n') + 1);  // its #version: make_program writes one
+  const gl::Program program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                                {GL_FRAGMENT_SHADER, fragment}},
+                                               "", "HLSL post-process via spirv-cross");
+  // spirv-cross names a sampler after the texture and sampler it combines: bind by texture name.
+  const GLuint p = program.get();
+  GLint uniforms = 0;
+  glGetProgramInterfaceiv(p, GL_UNIFORM, GL_ACTIVE_RESOURCES, &uniforms);
+  const std::vector<GlName> codes = pass.code_textures();
+  ASSERT_EQ(codes.size(), 2u);
+  for (GLint u = 0; u < uniforms; ++u) {
+    char name[256];
+    glGetProgramResourceName(p, GL_UNIFORM, GLuint(u), sizeof name, nullptr, name);
+    const std::string n = name;
+    const GLint location = glGetProgramResourceLocation(p, GL_UNIFORM, name);
+    if (n.find("rsaa_codes") != std::string::npos) {
+      const GLint units[2] = {4, 5};
+      glProgramUniform1iv(p, location, 2, units);
+    } else if (n.find("rsaa_colour") != std::string::npos) {
+      glProgramUniform1i(p, location, 0);
+    } else if (n.find("rsaa_centre_normal") != std::string::npos) {
+      glProgramUniform1i(p, location, 1);
+    } else if (n.find("rsaa_centre_depth") != std::string::npos) {
+      glProgramUniform1i(p, location, 2);
+    }
+  }
+  // The constant buffer: the inverse projection taking Direct3D's depth (z = 2 d - 1), the
+  // viewport, the threshold.
+  glm::mat4 d3d_depth(1.0f);
+  d3d_depth[2][2] = 2.0f, d3d_depth[3][2] = -1.0f;
+  struct {
+    float inverse_projection[16];
+    float viewport[2];
+    float threshold;
+    float padding;
+  } constants{};
+  const glm::mat4 inverse = view.inverse_projection() * d3d_depth;
+  std::copy_n(glm::value_ptr(inverse), 16, constants.inverse_projection);
+  constants.viewport[0] = kWidth, constants.viewport[1] = kHeight;
+  constants.threshold = settings.threshold;
+  gl::Buffer buffer = [&] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, sizeof constants, &constants, 0);
+    return gl::Buffer(b);
+  }();
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, buffer.get());
+  const gl::Texture colour = upside_down(frame.colour, GL_RGBA16F, kWidth, kHeight, GL_LINEAR);
+  const gl::Texture normal = upside_down(frame.centre_normal, GL_RG16UI, kWidth, kHeight);
+  const gl::Texture depth = upside_down(frame.centre_depth, GL_DEPTH_COMPONENT32F, kWidth, kHeight);
+  const gl::Texture codes0 = upside_down(codes[0], GL_RGBA8UI, kWidth, kHeight);
+  const gl::Texture codes1 = upside_down(codes[1], GL_RGBA8UI, kWidth, kHeight);
+  const GLuint textures[6] = {colour.get(), normal.get(), depth.get(), 0, codes0.get(), codes1.get()};
+  glBindTextures(0, 6, textures);
+  const gl::Texture hlsl_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  const gl::Framebuffer target = gl::make_framebuffer({{hlsl_output.get()}});
+  glBindFramebuffer(GL_FRAMEBUFFER, target.get());
+  glViewport(0, 0, kWidth, kHeight);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(p);
+  draw_fullscreen_triangle();
+  gl::check("the HLSL post-process");
+
+  const Image glsl = read_back_image(glsl_output.get(), kWidth, kHeight);
+  const Image hlsl = read_back_image(hlsl_output.get(), kWidth, kHeight);
+  const Image noaa = read_back_image(frame.colour, kWidth, kHeight);
+  int resampled = 0, differing = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const Rgb a = glsl.at(x, y), b = hlsl.at(x, kHeight - 1 - y), c = noaa.at(x, y);
+      resampled += a.r != c.r || a.g != c.g || a.b != c.b;
+      const float d = std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+      differing += d > 1e-3f;
+    }
+  EXPECT_GT(resampled, 300);
+  EXPECT_EQ(differing, 0) << "of " << resampled << " resampled pixels";
+}
+
+INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1));
+
+}  // namespace
+}  // namespace rsaa
