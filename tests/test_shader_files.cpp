@@ -5,10 +5,13 @@
 // GLSL post-process on a real frame: same algorithm, Direct3D's conventions handled right.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/conventions.h"
+#include "core/sample_pattern.h"
 #include "runtime/fullscreen.h"
 #include "runtime/gl_objects.h"
 #include "runtime/render.h"
@@ -257,6 +260,111 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1));
+
+TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
+  test::TempDir dir;
+  const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --auth 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string post = test::read_text(dir.file("out/rsaa_post.frag"));
+  const std::string prepass = test::read_text(dir.file("out/rsaa_prepass.glsl"));
+  EXPECT_EQ(post.find("#include"), std::string::npos);
+  EXPECT_EQ(prepass.find("#include"), std::string::npos);
+  EXPECT_EQ(glslang_errors("frag", post), "");
+  EXPECT_EQ(glslang_errors("vert", "#version 450\n#define RSAA_INCLUDE_FS 0\n" + prepass +
+                                       "void main() { gl_Position = rsaa_jitter(vec4(1.0)); }\n"),
+            "");
+  EXPECT_EQ(glslang_errors("frag", "#version 450\n" + prepass +
+                                       "layout(location = 0) out uvec4 o;\n"
+                                       "void main() { o = rsaa_prepass_code(vec3(1.0), vec3(0.0, 0.0, 1.0), 0u); }\n"),
+            "");
+  const auto hlsl = test::run_command("glslangValidator -D -V -S frag -e RsaaPostPS -o " + dir.file("p.spv") + " " +
+                                      dir.file("out/rsaa_post.hlsl"));
+  EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
+}
+
+TEST(GeneratedShaders, BadOptionsOrTablesAreRefusedAndWriteNothing) {
+  test::TempDir dir;
+  test::write_text(dir.file("broken.json"), "{\"pattern\": ");
+  const auto broken = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --table " + dir.file("broken.json"));
+  EXPECT_NE(broken.exit_code, 0);
+  EXPECT_NE(broken.output.find("broken.json"), std::string::npos) << broken.output;
+  EXPECT_NE(test::run_rsaa("shaders --out-dir " + dir.file("out") + " --code-bits 12").exit_code, 0);
+  EXPECT_NE(test::run_rsaa("shaders --out-dir " + dir.file("out") + " --pattern d3d9x").exit_code, 0);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out/rsaa_post.frag")));
+}
+
+class GeneratedShadersOnGl : public test::GlTest {};
+
+// The generated rsaa_post.frag (offsets inlined, RSAA_TABLE_ARRAY) with the uniform block filled
+// as rsaa_uniforms.glsl documents it: the image of RsaaPass's post-process (table texture).
+TEST_F(GeneratedShadersOnGl, ThePostFragmentWithItsTableInlinedGivesThePassImage) {
+  constexpr int kWidth = 160, kHeight = 120;
+  RsaaSettings settings;
+  settings.auth = 1;
+  const Scene scene = load_scene("builtin:default");
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
+  SceneRenderer renderer;
+  const RsaaTargets targets(kWidth, kHeight);
+  renderer.draw_gbuffer(gpu, view, targets);
+  RsaaPass pass(settings, kWidth, kHeight);
+  const RsaaFrame frame = targets.frame(view.inverse_projection());
+  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) { SceneRenderer::draw(gpu, view, jitter, program); });
+  const gl::Texture pass_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(frame, pass_output.get());
+
+  test::TempDir dir;
+  const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --auth 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::string fragment = test::read_text(dir.file("out/rsaa_post.frag"));
+  fragment.erase(0, fragment.find('\n') + 1);  // its #version: make_program writes one
+  const gl::Program program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                                {GL_FRAGMENT_SHADER, fragment}},
+                                               "", "generated rsaa_post.frag");
+  // The block, std140: mat4, viewport, jitter, threshold, subsample, padding, ivec4 per subsample.
+  std::vector<std::int32_t> block(24 + 4 * pass.pattern().size(), 0);
+  const glm::mat4 inverse = view.inverse_projection();
+  std::memcpy(block.data(), glm::value_ptr(inverse), 64);
+  const float viewport[2] = {float(kWidth), float(kHeight)};
+  std::memcpy(&block[16], viewport, 8);
+  std::memcpy(&block[20], &settings.threshold, 4);
+  for (int i = 0; i < pass.pattern().size(); ++i) {
+    const PixelStep step = outside_pixel_towards(pass.pattern().positions[i]);
+    const Vec2 gl_step = pixel_to_gl({double(step.i), double(step.j)});
+    block[24 + 4 * i] = int(gl_step.x), block[24 + 4 * i + 1] = int(gl_step.y);
+  }
+  gl::Buffer buffer = [&] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, GLsizeiptr(block.size() * 4), block.data(), 0);
+    return gl::Buffer(b);
+  }();
+  glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings.uniform_binding), buffer.get());
+  const std::vector<GlName> codes = pass.code_textures();
+  const GLuint textures[6] = {frame.colour, frame.centre_normal, frame.centre_depth, 0, codes[0], codes[1]};
+  glBindTextures(0, 6, textures);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  const gl::Framebuffer target = gl::make_framebuffer({{output.get()}});
+  glBindFramebuffer(GL_FRAMEBUFFER, target.get());
+  glViewport(0, 0, kWidth, kHeight);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(program.get());
+  draw_fullscreen_triangle();
+  gl::check("the generated post-process");
+
+  const Image expected = read_back_image(pass_output.get(), kWidth, kHeight);
+  const Image generated = read_back_image(output.get(), kWidth, kHeight);
+  const Image noaa = read_back_image(frame.colour, kWidth, kHeight);
+  int resampled = 0, differing = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const Rgb a = expected.at(x, y), b = generated.at(x, y), c = noaa.at(x, y);
+      resampled += a.r != c.r || a.g != c.g || a.b != c.b;
+      differing += std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}) > 1e-3f;
+    }
+  EXPECT_GT(resampled, 300);
+  EXPECT_EQ(differing, 0) << "of " << resampled << " resampled pixels";
+}
 
 }  // namespace
 }  // namespace rsaa

@@ -16,6 +16,7 @@
 #include "core/atomic_file.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
+#include "tools/cli/out_dir.h"
 #include "tools/cli/progress.h"
 #include "trainer/train.h"
 
@@ -59,17 +60,6 @@ std::string rms_text(const TrainingError::Rms& s) {
   return s.count ? buffer : "-";
 }
 
-// The output directory, created if missing, and held exclusively until the three files are in
-// place: a second train into it is refused at once instead of mixing its files with ours.
-std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir) {
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error || !std::filesystem::is_directory(dir))
-    throw std::invalid_argument("--out-dir: cannot create '" + dir + "'" +
-                                (error ? " (" + error.message() + ")" : ""));
-  return std::make_unique<DirectoryLock>(dir, "rsaa train");
-}
-
 // A file-name stem from a scene name: letters, digits, '-' and '_' kept, anything else '_'.
 std::string stem_text(const std::string& name) {
   std::string out;
@@ -88,7 +78,7 @@ double peak_memory_mib() {
 int run_train_from_scene(const TrainArgs& a) {
   if (!a.pattern.empty() && a.pattern != "d3d8x")
     throw std::invalid_argument("--from-scene trains d3d8x tables only (RSAA 8x masks)");
-  const auto lock = claim_out_dir(a.out_dir);
+  const auto lock = claim_out_dir(a.out_dir, "rsaa train");
   const OffsetTable generic = read_offset_table(a.generic);
   bench::SceneTableOptions o;
   o.scene = a.from_scene;
@@ -134,7 +124,7 @@ int run_train(const TrainArgs& a) {
   options.fit = a.fit == "ockham" ? FitRule::Ockham : FitRule::Mixed;
   options.two_line_weight = a.two_line_weight;
   options.threads = a.threads;
-  const auto lock = claim_out_dir(a.out_dir);
+  const auto lock = claim_out_dir(a.out_dir, "rsaa train");
 
   const int threads = a.threads > 0 ? a.threads : default_thread_count();
   std::printf("rsaa train: pattern %s (%d subsamples, %zu masks), %llu cases, seed %llu, fit %s",
