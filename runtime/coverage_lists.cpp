@@ -7,6 +7,7 @@
 
 
 #include "runtime/gl_context.h"
+#include "runtime/technique_testing.h"
 #include "runtime/scene_renderer.h"
 #include "runtime/shader_library.h"
 
@@ -207,6 +208,11 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   timer_.end();
   gl::check("coverage lists: resolve");
+}
+
+CoverageFragmentLists* coverage_lists_of(Technique& technique) {
+  auto* coverage = dynamic_cast<CoverageListTechnique*>(&technique);
+  return coverage ? coverage->coverage_lists() : nullptr;
 }
 
 }  // namespace rsaa

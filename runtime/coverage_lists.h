@@ -76,7 +76,7 @@ class CoverageListTechnique : public Technique {
                         int height, bool z_prepass = false);
   void render(const GpuScene& scene, const View& view, GLuint output) override;
   double bytes_per_pixel() const override { return lists_.bytes_per_pixel(); }
-  CoverageFragmentLists* coverage_lists() override { return &lists_; }
+  CoverageFragmentLists* coverage_lists() { return &lists_; }
   GLuint resolve_program() const { return resolve_.get(); }
 
  protected:

@@ -9,7 +9,7 @@
 #include "core/image.h"
 #include "runtime/camera.h"
 #include "runtime/gpu_scene.h"
-#include "runtime/technique.h"
+#include "runtime/technique_registry.h"
 
 namespace rsaa {
 

@@ -14,7 +14,8 @@
 #include "tests/gl_test.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"
-#include "runtime/technique.h"
+#include "runtime/technique_registry.h"
+#include "runtime/technique_testing.h"
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
@@ -42,7 +43,7 @@ Rendered render_both(const std::string& technique, const std::string& scene_name
   t->render(gpu, view, output.get());
   Rendered r;
   r.gl = to_display(read_back_image(output.get(), width, height));
-  CoverageFragmentLists* lists = t->coverage_lists();
+  CoverageFragmentLists* lists = coverage_lists_of(*t);
   const auto pixels = lists->read_back();
   r.fragments = lists->fragments();
   const glm::vec3 bg = gpu.background();
@@ -135,7 +136,7 @@ TEST_F(CoverageGl, DcaaBeatsNoAaAndListsGrowWhenTheyOverflow) {
   auto t = make_technique(technique_options("dcaa"), 8, 8);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, 8, 8);
   t->render(gpu, make_view(camera, 8, 8), output.get());
-  EXPECT_GE(t->bytes_per_pixel(), 4.0 + 40.0 * double(t->coverage_lists()->fragments()) / 64.0);
+  EXPECT_GE(t->bytes_per_pixel(), 4.0 + 40.0 * double(coverage_lists_of(*t)->fragments()) / 64.0);
 }
 
 }  // namespace
@@ -254,7 +255,7 @@ TEST_F(CoverageGl, ZPrepassCullsHiddenFragments) {
     auto t = make_technique(o, 160, 120);
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, 160, 120);
     t->render(gpu, view, output.get());
-    fragments[prepass] = t->coverage_lists()->fragments();
+    fragments[prepass] = coverage_lists_of(*t)->fragments();
     psnr[prepass] = compare_images(to_display(read_back_image(output.get(), 160, 120)), reference).psnr_db;
     bool has_prepass_time = false;
     for (const PassTime& p : t->take_pass_times()) has_prepass_time |= p.pass == "z-prepass";

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <set>
 
 #include "core/image_io.h"
 #include "core/image_metrics.h"
@@ -41,6 +42,34 @@ bool all_finite(const Image& image) {
   for (const Rgb& p : image.pixels)
     if (!std::isfinite(p.r) || !std::isfinite(p.g) || !std::isfinite(p.b)) return false;
   return true;
+}
+
+// The registry: every technique once, each makes itself from its default options and renders a
+// frame, labels are distinct, and an unknown name is refused naming the known ones.
+TEST_F(Runtime, EveryRegisteredTechniqueMakesItselfAndRendersAFrame) {
+  const Scene scene = load_scene("builtin:edges");
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), 32, 24);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, 32, 24);
+  std::set<std::string> names, labels;
+  for (const TechniqueKind& kind : registered_techniques()) {
+    EXPECT_TRUE(names.insert(kind.name).second) << kind.name << " registered twice";
+    EXPECT_FALSE(kind.description.empty()) << kind.name;
+    const TechniqueOptions options = technique_options(kind.name);
+    EXPECT_NO_THROW(validate(options)) << kind.name;
+    EXPECT_TRUE(labels.insert(technique_label(options)).second) << technique_label(options);
+    auto technique = make_technique(options, 32, 24);
+    technique->render(gpu, view, output.get());
+    EXPECT_GT(technique->bytes_per_pixel(), 0.0) << kind.name;
+  }
+  EXPECT_EQ(names.size(), technique_names().size());
+  try {
+    validate(technique_options("rsaaa"));
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("known: noaa, fxaa"), std::string::npos) << e.what();
+  }
+  gl::check("registry");
 }
 
 TEST_F(Runtime, DriverPatternMatchesTheCheckedInGl4xTable) {

@@ -12,6 +12,7 @@
 #include "core/conventions.h"
 #include "runtime/camera.h"
 #include "runtime/shader_library.h"
+#include "runtime/technique_testing.h"
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
@@ -228,6 +229,36 @@ AgaaFrameData read_back_agaa(Technique& agaa, const View& view) {
   auto* t = dynamic_cast<Agaa*>(&agaa);
   if (!t) throw std::invalid_argument("read_back_agaa: not an agaa technique");
   return t->read_back(view);
+}
+
+TechniqueKind agaa_technique() {
+  return {"agaa", "Aggregate G-buffer Anti-Aliasing: 4 (hardware) or 8 (jittered) visibility samples, c aggregates",
+          [](const TechniqueOptions& o) {
+            const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
+            const int n = samples_or(o, 8);
+            if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
+            if (!(o.agaa_k >= 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length >= 0");
+            if (o.agaa_diffuse != "filtered" && o.agaa_diffuse != "plain") bad("agaa --agaa-diffuse must be filtered or plain");
+            if (o.agaa_aggregates < 1 || o.agaa_aggregates > 4) bad("agaa --agaa-aggregates must be 1, 2, 3 or 4");
+            if (!(o.agaa_k_pixels > 0.0) || !std::isfinite(o.agaa_k_pixels))
+              bad("agaa --agaa-k-pixels must be finite and > 0");
+          },
+          [](const TechniqueOptions& o) {
+            std::ostringstream label;
+            label << "agaa " << samples_or(o, 8) << "x";
+            if (o.agaa_k > 0.0) label << " k" << o.agaa_k;
+            else if (o.agaa_k_pixels != TechniqueOptions{}.agaa_k_pixels) label << " k" << o.agaa_k_pixels << "px";
+            if (o.agaa_aggregates != TechniqueOptions{}.agaa_aggregates) label << " c" << o.agaa_aggregates;
+            if (o.agaa_diffuse != TechniqueOptions{}.agaa_diffuse) label << " " << o.agaa_diffuse;
+            return label.str();
+          },
+          [](const TechniqueOptions& o, int width, int height) {
+            AgaaSettings s;
+            s.k = float(o.agaa_k);
+            s.aggregates = o.agaa_aggregates;
+            s.filtered_diffuse = o.agaa_diffuse == "filtered";
+            return make_agaa(samples_or(o, 8), s, float(o.agaa_k > 0.0 ? 0.0 : o.agaa_k_pixels), width, height);
+          }};
 }
 
 }  // namespace rsaa

@@ -26,4 +26,16 @@ std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepas
   return t;
 }
 
+TechniqueKind dcaa_technique() {
+  return {"dcaa", "Decoupled Coverage Anti-Aliasing: 64 coverage samples, up to 4 surfaces per pixel",
+          [](const TechniqueOptions& o) {
+            if (o.samples != 0 && o.samples != 64) throw std::invalid_argument("dcaa always uses 64 coverage samples");
+            dcaa_settings(o.rules);
+          },
+          [](const TechniqueOptions& o) { return coverage_technique_label(o); },
+          [](const TechniqueOptions& o, int width, int height) {
+            return make_dcaa(dcaa_settings(o.rules), o.z_prepass, width, height);
+          }};
+}
+
 }  // namespace rsaa

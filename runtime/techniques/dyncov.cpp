@@ -20,4 +20,16 @@ std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, boo
   return t;
 }
 
+TechniqueKind dyncov_technique() {
+  return {"dyncov", "dynamic coverage: 16 coverage samples, two surface slots per pixel",
+          [](const TechniqueOptions& o) {
+            if (o.samples != 0 && o.samples != 16) throw std::invalid_argument("dyncov always uses 16 coverage samples");
+            dynamic_coverage_rules(o.rules);
+          },
+          [](const TechniqueOptions& o) { return coverage_technique_label(o); },
+          [](const TechniqueOptions& o, int width, int height) {
+            return make_dynamic_coverage(dynamic_coverage_rules(o.rules), o.z_prepass, width, height);
+          }};
+}
+
 }  // namespace rsaa

@@ -70,4 +70,15 @@ std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height)
   return std::make_unique<FilteredSsaa>(kernel, width, height);
 }
 
+TechniqueKind filtered_ssaa_technique() {
+  return {"ssaa-filtered", "2x2 supersampling downsampled by kernel 1 (box), 2 (five-tap) or 3 (alpha-driven)",
+          [](const TechniqueOptions& o) {
+            if (o.samples != 0 && o.samples != 4)
+              throw std::invalid_argument("ssaa-filtered always uses 4 samples (2x2)");
+            if (o.kernel < 1 || o.kernel > 3) throw std::invalid_argument("ssaa-filtered --kernel must be 1, 2 or 3");
+          },
+          [](const TechniqueOptions& o) { return "ssaa-filtered k" + std::to_string(o.kernel); },
+          [](const TechniqueOptions& o, int width, int height) { return make_filtered_ssaa(o.kernel, width, height); }};
+}
+
 }  // namespace rsaa

@@ -47,4 +47,11 @@ class Fxaa : public Technique {
 
 std::unique_ptr<Technique> make_fxaa(int width, int height) { return std::make_unique<Fxaa>(width, height); }
 
+TechniqueKind fxaa_technique() {
+  return {"fxaa", "an FXAA-style post-process of the 1x frame",
+          [](const TechniqueOptions& o) { reject_samples(o); },
+          [](const TechniqueOptions&) { return std::string("fxaa"); },
+          [](const TechniqueOptions&, int width, int height) { return make_fxaa(width, height); }};
+}
+
 }  // namespace rsaa

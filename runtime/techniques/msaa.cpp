@@ -44,4 +44,19 @@ std::unique_ptr<Technique> make_hardware_msaa(int samples, int width, int height
   return std::make_unique<HardwareMsaa>(samples, width, height);
 }
 
+TechniqueKind msaa_technique() {
+  return {"msaa", "hardware 4x MSAA, resolved by the driver",
+          [](const TechniqueOptions& o) {
+            // llvmpipe's only multisample count is 4; a jittered 8-sample baseline shades every
+            // sample, which is supersampling, so it is named ssaa --samples 8.
+            const int n = samples_or(o, 4);
+            if (n == 8)
+              throw std::invalid_argument("msaa --samples 8: the driver has no 8x MSAA; its jittered stand-in "
+                                          "shades every sample: use ssaa --samples 8");
+            if (n != 4) throw std::invalid_argument("msaa --samples must be 4, not " + std::to_string(n));
+          },
+          [](const TechniqueOptions& o) { return "msaa " + std::to_string(samples_or(o, 4)) + "x"; },
+          [](const TechniqueOptions&, int width, int height) { return make_hardware_msaa(4, width, height); }};
+}
+
 }  // namespace rsaa

@@ -32,4 +32,11 @@ std::unique_ptr<Technique> make_noaa(int width, int height) {
   return std::make_unique<NoAA>(width, height);
 }
 
+TechniqueKind noaa_technique() {
+  return {"noaa", "no anti-aliasing: the 1x frame",
+          [](const TechniqueOptions& o) { reject_samples(o); },
+          [](const TechniqueOptions&) { return std::string("noaa"); },
+          [](const TechniqueOptions&, int width, int height) { return make_noaa(width, height); }};
+}
+
 }  // namespace rsaa

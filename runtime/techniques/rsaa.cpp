@@ -48,4 +48,70 @@ std::unique_ptr<Technique> make_rsaa(const RsaaSettings& settings, int width, in
   return t;
 }
 
+RsaaSettings rsaa_settings(const TechniqueOptions& o) {
+  RsaaSettings s;
+  if (!o.table.empty()) {
+    s.table = std::make_shared<const OffsetTable>(read_offset_table(o.table));
+    const int table_samples = s.table->pattern.size();
+    if (o.samples != 0 && o.samples != table_samples)
+      throw std::invalid_argument("--table " + o.table + " is for " + std::to_string(table_samples) +
+                                  " samples (pattern '" + s.table->pattern.name + "'), but --samples is " +
+                                  std::to_string(o.samples));
+    s.pattern.clear();  // the table's own
+  } else {
+    const int n = samples_or(o, 8);
+    s.pattern = n == 8 ? "d3d8x" : o.pattern.empty() ? "gl4x" : o.pattern;
+  }
+  s.similarity = o.similarity;
+  s.auth = o.auth;
+  s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;
+  s.code_bits = o.code_bits;
+  s.prepass = o.prepass;
+  return s;
+}
+
+namespace {
+
+void validate_rsaa(const TechniqueOptions& o) {
+  const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
+  const int n = samples_or(o, 8);
+  if (o.table.empty() && n != 4 && n != 8) bad("rsaa --samples must be 4 or 8, not " + std::to_string(n));
+  if (o.similarity != "sadp" && o.similarity != "depth" && o.similarity != "sadp-plane")
+    bad("rsaa --similarity must be sadp, depth or sadp-plane, not '" + o.similarity + "'");
+  if (o.auth < 0 || o.auth > 2) bad("rsaa --auth must be 0, 1 or 2");
+  if (!o.pattern.empty()) {
+    if (n == 8 && o.pattern != "d3d8x") bad("rsaa --samples 8 uses --pattern d3d8x");
+    if (n == 4 && o.pattern != "gl4x" && o.pattern != "d3d4x") bad("rsaa --samples 4 uses --pattern gl4x or d3d4x");
+  }
+  if (o.prepass != "jittered" && o.prepass != "msaa")
+    bad("rsaa --prepass must be jittered or msaa, not '" + o.prepass + "'");
+  if (!o.table.empty() && !o.pattern.empty()) bad("rsaa --table brings its own sample pattern: leave out --pattern");
+  if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32) bad("rsaa --code-bits must be 8, 16 or 32");
+  if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)
+    bad("rsaa --threshold must be a finite number >= 0");
+}
+
+std::string rsaa_label(const TechniqueOptions& o) {
+  const std::string tail = " " + o.similarity + " auth" + std::to_string(o.auth) +
+                           (o.prepass == "jittered" ? "" : " " + o.prepass);
+  if (!o.table.empty()) {  // the table's file name stands for its pattern and sample count
+    const std::size_t slash = o.table.find_last_of('/');
+    std::string stem = o.table.substr(slash == std::string::npos ? 0 : slash + 1);
+    if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ".json") == 0) stem.resize(stem.size() - 5);
+    return "rsaa table " + stem + tail;
+  }
+  const int n = samples_or(o, 8);
+  return "rsaa " + std::to_string(n) + "x" + (n == 4 ? " " + (o.pattern.empty() ? std::string("gl4x") : o.pattern) : "") +
+         tail;
+}
+
+}  // namespace
+
+TechniqueKind rsaa_technique() {
+  return {"rsaa", "Resampling Anti-Aliasing: similarity mask -> table offset -> one bilinear fetch",
+          validate_rsaa, rsaa_label, [](const TechniqueOptions& o, int width, int height) {
+            return make_rsaa(rsaa_settings(o), width, height);
+          }};
+}
+
 }  // namespace rsaa

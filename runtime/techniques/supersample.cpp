@@ -113,4 +113,19 @@ std::unique_ptr<Technique> make_jittered_supersampling(std::vector<Vec2> positio
   return std::make_unique<JitteredSupersampling>(std::move(positions), width, height);
 }
 
+TechniqueKind ssaa_technique() {
+  return {"ssaa", "jittered supersampling: 8 (d3d8x), 16 or 64 (the reference) shaded samples per pixel",
+          [](const TechniqueOptions& o) {
+            const int n = samples_or(o, 64);
+            if (n != 8 && n != 16 && n != 64)
+              throw std::invalid_argument("ssaa --samples must be 8, 16 or 64, not " + std::to_string(n));
+          },
+          [](const TechniqueOptions& o) { return "ssaa " + std::to_string(samples_or(o, 64)) + "x"; },
+          [](const TechniqueOptions& o, int width, int height) {
+            const int n = samples_or(o, 64);
+            if (n == 8) return make_jittered_supersampling(builtin_pattern("d3d8x").positions, width, height);
+            return make_jittered_supersampling(stratified_positions(n == 64 ? 8 : 4, 64), width, height);
+          }};
+}
+
 }  // namespace rsaa

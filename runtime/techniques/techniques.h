@@ -1,7 +1,10 @@
-// Constructors of the techniques behind make_technique(); one file per technique.
+// Inside runtime/techniques/: each file's TechniqueKind (listed by registry.cpp), its
+// constructor, and what techniques share. Hooks for tests: runtime/technique_testing.h.
 #pragma once
 
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/agaa.h"
@@ -10,9 +13,28 @@
 #include "runtime/rsaa_pass.h"
 #include "runtime/gl_context.h"
 #include "runtime/scene_renderer.h"
-#include "runtime/technique.h"
+#include "runtime/technique_registry.h"
 
 namespace rsaa {
+
+TechniqueKind noaa_technique();
+TechniqueKind fxaa_technique();
+TechniqueKind msaa_technique();
+TechniqueKind ssaa_technique();
+TechniqueKind filtered_ssaa_technique();
+TechniqueKind rsaa_technique();
+TechniqueKind dcaa_technique();
+TechniqueKind dyncov_technique();
+TechniqueKind agaa_technique();
+
+// For techniques that take no --samples.
+inline void reject_samples(const TechniqueOptions& o) {
+  if (o.samples > 1) throw std::invalid_argument(o.technique + " takes no --samples");
+}
+// "dcaa", "dyncov seed zpre": the coverage techniques' rules and z-prepass when not the default.
+inline std::string coverage_technique_label(const TechniqueOptions& o) {
+  return o.technique + (o.rules == TechniqueOptions{}.rules ? "" : " " + o.rules) + (o.z_prepass ? " zpre" : "");
+}
 
 std::unique_ptr<Technique> make_noaa(int width, int height);
 std::unique_ptr<Technique> make_fxaa(int width, int height);
@@ -30,22 +52,12 @@ void configure_surface_resolve(GLuint program, const SamplePattern& pattern, con
 // set per frame from the view), else settings.k in scene units.
 std::unique_ptr<Technique> make_agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height);
 
-// The last frame's buffers of an agaa technique with jittered samples (multisampled textures
-// cannot be read back), rows top first: for the tests' CPU oracle.
-struct AgaaFrameData {
-  int width = 0, height = 0, samples = 0;
-  AgaaSettings settings;  // as used for the frame (k_per_depth from its view)
-  std::vector<AgaaSample> samples_of_pixels;  // width * height * samples
-  std::vector<std::uint32_t> meta;            // width * height, agaa_samples.glsl's layout
-  std::vector<AgaaAggregateSums> aggregates;  // width * height * settings.aggregates
-  std::vector<Normal3> pixel_rays;            // width * height, view space
-};
-AgaaFrameData read_back_agaa(Technique& agaa, const View& view);
 std::unique_ptr<Technique> make_hardware_msaa(int samples, int width, int height);
 std::unique_ptr<Technique> make_jittered_supersampling(std::vector<Vec2> positions, int width, int height);
 // The pass settings of rsaa options (validated by the caller).
 RsaaSettings rsaa_settings(const TechniqueOptions& options);
-// mask_output: an R32UI texture that receives the masks when settings.output_mask.
+// mask_output: an R32UI texture that receives the masks when settings.output_mask (for
+// rsaa diagnose, train --from-scene and tests).
 std::unique_ptr<Technique> make_rsaa(const RsaaSettings& settings, int width, int height,
                                      GLuint mask_output = 0);
 

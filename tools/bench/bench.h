@@ -10,7 +10,7 @@
 
 #include "core/image_io.h"
 #include "runtime/pass_timer.h"
-#include "runtime/technique.h"
+#include "runtime/technique_registry.h"
 
 namespace rsaa::bench {
 

@@ -3,7 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "runtime/technique.h"
+#include "runtime/technique_registry.h"
 #include "tools/cli/options.h"
 
 namespace rsaa::cli {

@@ -1,0 +1,62 @@
+#include "runtime/technique_registry.h"
+
+#include <stdexcept>
+
+namespace rsaa {
+
+const TechniqueKind& find_technique(const std::string& name) {
+  for (const TechniqueKind& kind : registered_techniques())
+    if (kind.name == name) return kind;
+  std::string known;
+  for (const auto& n : technique_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown technique '" + name + "' (known: " + known + ")");
+}
+
+const std::vector<std::string>& technique_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const TechniqueKind& kind : registered_techniques()) out.push_back(kind.name);
+    return out;
+  }();
+  return names;
+}
+
+TechniqueOptions technique_options(const std::string& technique, int samples) {
+  TechniqueOptions o;
+  o.technique = technique;
+  o.samples = samples;
+  return o;
+}
+
+std::vector<TechniqueOptions> rsaa_variants() {
+  std::vector<TechniqueOptions> list;
+  for (int samples : {4, 8})
+    for (const char* similarity : {"sadp", "depth"})
+      for (int auth : {0, 1, 2}) {
+        TechniqueOptions o = technique_options("rsaa", samples);
+        o.similarity = similarity;
+        o.auth = auth;
+        list.push_back(o);
+      }
+  return list;
+}
+
+std::vector<TechniqueOptions> rsaa_defaults() {
+  return {technique_options("rsaa", 4), technique_options("rsaa", 8)};
+}
+
+void validate(const TechniqueOptions& o) {
+  const TechniqueKind& kind = find_technique(o.technique);
+  if (!o.table.empty() && o.technique != "rsaa")
+    throw std::invalid_argument("--table is an rsaa option, not " + o.technique + "'s");
+  kind.validate(o);
+}
+
+std::string technique_label(const TechniqueOptions& o) { return find_technique(o.technique).label(o); }
+
+std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, int height) {
+  validate(o);
+  return find_technique(o.technique).make(o, width, height);
+}
+
+}  // namespace rsaa

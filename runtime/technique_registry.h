@@ -1,0 +1,74 @@
+// The techniques by name (docs/conventions.md section 4): their options, and the registry that
+// names, validates, labels and makes each one. A technique registers itself in its own file
+// (runtime/techniques/NAME.cpp returns its TechniqueKind) and is listed once in
+// runtime/techniques/registry.cpp: a new technique is one source file, its shaders and one line.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/technique.h"
+
+namespace rsaa {
+
+// Every technique's options in one bag (what the command line fills); each technique reads and
+// validates its own fields.
+struct TechniqueOptions {
+  std::string technique = "noaa";
+  int samples = 0;                   // 0: the technique's default
+  std::string similarity = "sadp-plane";  // rsaa: sadp-plane (default) | sadp | depth (the paper's)
+  int auth = 0;                      // rsaa: 0 none, 1 post-pass, 2 pre-pass
+  double threshold = -1.0;           // rsaa: < 0 = default (0.4 SADP, 0.4 % depth)
+  std::string pattern;               // rsaa 4x: gl4x (default) | d3d4x
+  int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
+  std::string table;                 // rsaa: an offset table file (JSON); empty: the built-in one
+  std::string prepass = "jittered";  // rsaa: jittered | msaa (RsaaSettings::prepass)
+  int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
+  double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
+                                     // paper's 0.1); 0: relative, agaa_k_pixels footprints
+  double agaa_k_pixels = 4.0;        // agaa: k in pixel footprints at the surface
+  int agaa_aggregates = 2;           // agaa: c, 1..4
+  std::string agaa_diffuse = "filtered";  // agaa: filtered (Lambert term scaled by |Na|) | plain
+  std::string rules = "surface";     // dyncov: surface | seed (core/dynamic_coverage.h);
+                                     // dcaa: surface | paper (core/dcaa.h)
+  bool z_prepass = false;            // dcaa, dyncov: DCAA's z-prepass (4x MSAA max depth)
+};
+
+// What a technique registers.
+struct TechniqueKind {
+  std::string name;         // "rsaa", what --technique takes
+  std::string description;  // one line for help texts
+  // Throws std::invalid_argument naming the bad option (unsupported sample count, ...).
+  void (*validate)(const TechniqueOptions& options);
+  // "rsaa 8x sadp auth1", "ssaa 64x": the name in tables, plots and file names.
+  std::string (*label)(const TechniqueOptions& options);
+  // Needs a current GL 4.5 context; options validated. Sizes are those of the frames it renders.
+  std::unique_ptr<Technique> (*make)(const TechniqueOptions& options, int width, int height);
+};
+
+// The registered techniques, in the order help texts list them.
+const std::vector<TechniqueKind>& registered_techniques();
+// Throws std::invalid_argument naming the known techniques when `name` is not one.
+const TechniqueKind& find_technique(const std::string& name);
+const std::vector<std::string>& technique_names();
+
+// Options for a technique by name and sample count (0: its default), other fields defaulted.
+TechniqueOptions technique_options(const std::string& technique, int samples = 0);
+// The paper's 12 RSAA variants: samples 4 | 8 x similarity sadp | depth x auth 0 | 1 | 2.
+std::vector<TechniqueOptions> rsaa_variants();
+// RSAA 4x and 8x with this project's default options (sadp-plane, auth 0).
+std::vector<TechniqueOptions> rsaa_defaults();
+
+// The registry's validate, label and make for options.technique. validate throws
+// std::invalid_argument naming the bad option (unknown technique, unsupported sample count, ...).
+void validate(const TechniqueOptions& options);
+std::string technique_label(const TechniqueOptions& options);
+std::unique_ptr<Technique> make_technique(const TechniqueOptions& options, int width, int height);
+
+// options.samples, or `fallback` when 0 (the technique's default).
+inline int samples_or(const TechniqueOptions& options, int fallback) {
+  return options.samples ? options.samples : fallback;
+}
+
+}  // namespace rsaa

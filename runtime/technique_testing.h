@@ -1,0 +1,32 @@
+// Read-back hooks of techniques, for the tests' CPU oracles: not part of the Technique
+// interface (runtime/technique.h).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/agaa.h"
+#include "runtime/camera.h"
+#include "runtime/technique.h"
+
+namespace rsaa {
+
+class CoverageFragmentLists;
+
+// The last frame's buffers of an agaa technique with jittered samples (multisampled textures
+// cannot be read back), rows top first: for the tests' CPU oracle.
+struct AgaaFrameData {
+  int width = 0, height = 0, samples = 0;
+  AgaaSettings settings;  // as used for the frame (k_per_depth from its view)
+  std::vector<AgaaSample> samples_of_pixels;  // width * height * samples
+  std::vector<std::uint32_t> meta;            // width * height, agaa_samples.glsl's layout
+  std::vector<AgaaAggregateSums> aggregates;  // width * height * settings.aggregates
+  std::vector<Normal3> pixel_rays;            // width * height, view space
+};
+AgaaFrameData read_back_agaa(Technique& agaa, const View& view);
+
+// The per-pixel fragment lists of a coverage technique (dcaa, dyncov), else nullptr: for tests
+// that compare the GL resolve with the CPU reference on the same fragments.
+CoverageFragmentLists* coverage_lists_of(Technique& technique);
+
+}  // namespace rsaa
