@@ -9,10 +9,9 @@ include(CMakePackageConfigHelpers)
 set(RSAA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/rsaa)
 set(RSAA_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/rsaa)
 
-# core/ headers, minus the image-file and metrics headers (rsaa_image is a tools library).
-file(GLOB RSAA_CORE_HEADERS ${PROJECT_SOURCE_DIR}/core/*.h)
-list(FILTER RSAA_CORE_HEADERS EXCLUDE REGEX "/(image_io|image_metrics)\\.h$")
-install(FILES ${RSAA_CORE_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rsaa/core)
+# core/ headers, by family (include/rsaa/core/{rsaa,reference,util}/).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rsaa/core
+        FILES_MATCHING PATTERN "*.h")
 
 set(RSAA_INSTALLED_TARGETS rsaa_core)
 if(RSAA_WITH_RUNTIME)

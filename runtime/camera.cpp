@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/conventions.h"
+#include "core/rsaa/conventions.h"
 
 namespace rsaa {
 

@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/coverage_fragment.h"
-#include "core/halfplane_lut.h"
+#include "core/reference/coverage_fragment.h"
+#include "core/reference/halfplane_lut.h"
 #include "runtime/gl_objects.h"
 #include "runtime/gpu_scene.h"
 #include "runtime/scene_renderer.h"

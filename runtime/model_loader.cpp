@@ -16,9 +16,9 @@
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include "core/atomic_file.h"
-#include "core/colour.h"
-#include "core/image_io.h"
+#include "core/util/atomic_file.h"
+#include "core/util/colour.h"
+#include "image/image_io.h"
 #include "runtime/scene.h"
 
 namespace rsaa {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image.h"
+#include "core/util/image.h"
 #include "runtime/camera.h"
 #include "runtime/gpu_scene.h"
 #include "runtime/technique_registry.h"

@@ -9,7 +9,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/conventions.h"
+#include "core/rsaa/conventions.h"
 #include "runtime/camera.h"
 #include "runtime/gl_context.h"
 #include "runtime/fullscreen.h"

@@ -65,8 +65,8 @@
 
 #include <glm/glm.hpp>
 
-#include "core/offset_table.h"
-#include "core/sample_pattern.h"
+#include "core/rsaa/offset_table.h"
+#include "core/rsaa/sample_pattern.h"
 
 namespace rsaa {
 

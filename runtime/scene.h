@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "core/scene_shading.h"
+#include "core/reference/scene_shading.h"
 #include "runtime/camera.h"
 
 namespace rsaa {
@@ -57,7 +57,7 @@ const std::vector<std::string>& builtin_scene_names();
 
 // Budgets of model loading (docs/reliability.md): the model file and each file it refers to,
 // the vertices and faces copied out of the importer, and the texels of all its textures (each
-// texture also within kTextureBudget of core/image_io.h).
+// texture also within kTextureBudget of image/image_io.h).
 constexpr std::uint64_t kMaxModelFileBytes = std::uint64_t{256} << 20;
 constexpr std::uint64_t kMaxSceneVertices = std::uint64_t{1} << 24;
 constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{1} << 25;

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "core/offset_table.h"
+#include "core/rsaa/offset_table.h"
 
 namespace rsaa::gl {
 

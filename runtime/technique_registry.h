@@ -30,8 +30,8 @@ struct TechniqueOptions {
   double agaa_k_pixels = 4.0;        // agaa: k in pixel footprints at the surface
   int agaa_aggregates = 2;           // agaa: c, 1..4
   std::string agaa_diffuse = "filtered";  // agaa: filtered (Lambert term scaled by |Na|) | plain
-  std::string rules = "surface";     // dyncov: surface | seed (core/dynamic_coverage.h);
-                                     // dcaa: surface | paper (core/dcaa.h)
+  std::string rules = "surface";     // dyncov: surface | seed (core/reference/dynamic_coverage.h);
+                                     // dcaa: surface | paper (core/reference/dcaa.h)
   bool z_prepass = false;            // dcaa, dyncov: DCAA's z-prepass (4x MSAA max depth)
 };
 

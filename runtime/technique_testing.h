@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/agaa.h"
+#include "core/reference/agaa.h"
 #include "runtime/camera.h"
 #include "runtime/technique.h"
 

@@ -1,5 +1,5 @@
 // AGAA aggregate definition (seed 001, Algorithm 1 with eq. 1), c = 1..4: the rules of
-// core/agaa.cpp define_aggregates(), the tests' oracle.
+// core/reference/agaa.cpp define_aggregates(), the tests' oracle.
 #include "rsaa_common.glsl"
 #include "agaa_samples.glsl"
 
@@ -45,7 +45,7 @@ void main() {
   k = u_k_per_depth > 0.0 ? u_k_per_depth * abs(mean_position.z) : u_k;
   float len = length(mean_normal);
   if (len > 1e-6) mean_normal /= len;
-  // Seeds (define_aggregates() of core/agaa.cpp): s0 the farthest from the mean, s1 the farthest
+  // Seeds (define_aggregates() of core/reference/agaa.cpp): s0 the farthest from the mean, s1 the farthest
   // from s0, each further one the largest sum of squared distances to the seeds; only samples
   // farther than t from every seed qualify (else no further aggregate).
   int seeds[4];

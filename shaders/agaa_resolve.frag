@@ -1,6 +1,6 @@
 // AGAA deferred shading and resolve: each aggregate shaded once (mean albedo, normalised mean
 // normal with Toksvig's widening of the specular lobe, the pixel ray at the mean depth), then
-// composited by coverage over the background. core/agaa.cpp agaa_resolve() is the oracle.
+// composited by coverage over the background. core/reference/agaa.cpp agaa_resolve() is the oracle.
 #include "rsaa_common.glsl"
 #include "shading.glsl"
 

@@ -1,11 +1,11 @@
 // Coverage-based techniques, resolve: replays the pixel's fragment list in primitive order
 // (what fragment-shader interlock gives the papers) through the technique's per-pixel update,
 // then resolves. The rules are those of the CPU references, which the tests compare against:
-//   COVERAGE_DCAA         core/dcaa.cpp (Algorithm 1 merge/discard, per-sample depth resolve)
+//   COVERAGE_DCAA         core/reference/dcaa.cpp (Algorithm 1 merge/discard, per-sample depth resolve)
 //                         with DCAA_MAX_SURFACES surfaces (default 4) and the DcaaSettings
 //                         uniforms; dynamic coverage's surface rules are this with 2 surfaces
-//                         over 16 samples (core/dynamic_coverage.h)
-//   COVERAGE_DYNCOV_SEED  core/dynamic_coverage.cpp, the seed rules (two slots, evict the farther)
+//                         over 16 samples (core/reference/dynamic_coverage.h)
+//   COVERAGE_DYNCOV_SEED  core/reference/dynamic_coverage.cpp, the seed rules (two slots, evict the farther)
 #include "coverage_record.glsl"
 
 layout(r32ui) uniform readonly uimage2D u_heads;
@@ -42,7 +42,7 @@ float overlap_amount(vec3 a, vec3 b) {
   return min(a.x + half_range(a), b.x + half_range(b)) - max(a.x - half_range(a), b.x - half_range(b));
 }
 
-// merge_surfaces() of core/dcaa.cpp, into slot i from slot j.
+// merge_surfaces() of core/reference/dcaa.cpp, into slot i from slot j.
 void merge_into(int i, int j) {
   float wa = float(bits(s_coverage[i])), wb = float(bits(s_coverage[j]));
   float ka = wa + wb > 0.0 ? wa / (wa + wb) : 0.5, kb = 1.0 - ka;
@@ -65,7 +65,7 @@ bool covers(int i, int s) {
   return s < 32 ? ((s_coverage[i].x >> uint(s)) & 1u) != 0u : ((s_coverage[i].y >> uint(s - 32)) & 1u) != 0u;
 }
 
-// front_counts() of core/dcaa.cpp over slots 0..n-1: per sample, the covering slot with the
+// front_counts() of core/reference/dcaa.cpp over slots 0..n-1: per sample, the covering slot with the
 // smallest depth at the sample (ties: the earlier slot).
 void front_counts(int n, out int counts[MAX_SURFACES + 1]) {
   for (int i = 0; i < MAX_SURFACES + 1; ++i) counts[i] = 0;

@@ -148,7 +148,7 @@ uint rsaa_classify(float similarity[RSAA_SAMPLE_COUNT], float threshold, out flo
 #endif  // RSAA_SAMPLE_COUNT
 
 // ---- coverage masks of triangles from the half-plane LUT (DCAA, dynamic coverage). The table
-// is built by core/halfplane_lut.cpp, which documents the parametrisation: an edge is n.p = d
+// is built by core/reference/halfplane_lut.cpp, which documents the parametrisation: an edge is n.p = d
 // with n the unit normal towards the covered side, p in pixel space (centre (0, 0), y down).
 // The LUT texture is RG32UI: x = distance bin, y = angle bin; .x bits 0-31, .y bits 32-63.
 const float RSAA_TWO_PI = 6.283185307179586;

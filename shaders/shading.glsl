@@ -1,6 +1,6 @@
 // The scene's shading function, shared by every program that shades (forward passes and the
 // aggregate shading of agaa): a fixed directional light in view space and optional point lights,
-// Lambert diffuse plus a Phong lobe, two-sided. Linear light. core/scene_shading.h is its CPU twin (the AGAA oracle).
+// Lambert diffuse plus a Phong lobe, two-sided. Linear light. core/reference/scene_shading.h is its CPU twin (the AGAA oracle).
 #ifndef RSAA_SHADING_GLSL
 #define RSAA_SHADING_GLSL
 

@@ -1,5 +1,5 @@
 // Filtered SSAA downsampling (seed 003): the 2x2-supersampled frame brought to the output size
-// with bilinear taps. Tap offsets come from core/filtered_downsample.h as uniforms (converted to
+// with bilinear taps. Tap offsets come from core/reference/filtered_downsample.h as uniforms (converted to
 // window space there), so the CPU reference and this shader share one definition.
 uniform sampler2D u_supersampled;  // 2W x 2H, GL_LINEAR, clamp to edge; alpha = filter alpha
 uniform vec2 u_supersampled_size;

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/agaa.h"
-#include "core/scene_shading.h"
+#include "core/reference/agaa.h"
+#include "core/reference/scene_shading.h"
 
 namespace rsaa {
 namespace {

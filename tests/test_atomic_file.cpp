@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <limits>
 
-#include "core/atomic_file.h"
-#include "core/offset_table.h"
-#include "core/sample_pattern.h"
+#include "core/util/atomic_file.h"
+#include "core/rsaa/offset_table.h"
+#include "core/rsaa/sample_pattern.h"
 #include "tests/test_util.h"
 
 namespace rsaa {

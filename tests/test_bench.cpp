@@ -13,8 +13,8 @@
 #include "tools/bench/growth.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"
-#include "core/image_metrics.h"
-#include "core/scene_shading.h"
+#include "image/image_metrics.h"
+#include "core/reference/scene_shading.h"
 
 namespace rsaa {
 namespace {
@@ -243,8 +243,8 @@ TEST(Bench, RejectsBadOptions) {
 }  // namespace
 }  // namespace rsaa
 
-#include "core/offset_table.h"
-#include "tools/bench/scene_tables.h"
+#include "core/rsaa/offset_table.h"
+#include "tools/scene_training/scene_tables.h"
 
 namespace rsaa {
 namespace {

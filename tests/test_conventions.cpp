@@ -1,13 +1,13 @@
-// The conventions of core/conventions.h and docs/conventions.md section 1, checked once here.
+// The conventions of core/rsaa/conventions.h and docs/conventions.md section 1, checked once here.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "core/conventions.h"
-#include "core/line_case.h"
-#include "core/mask.h"
-#include "core/sample_pattern.h"
+#include "core/rsaa/conventions.h"
+#include "core/rsaa/line_case.h"
+#include "core/rsaa/mask.h"
+#include "core/rsaa/sample_pattern.h"
 
 namespace rsaa {
 namespace {

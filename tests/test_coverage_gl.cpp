@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "core/dcaa.h"
-#include "core/dynamic_coverage.h"
-#include "core/image_io.h"
-#include "core/image_metrics.h"
+#include "core/reference/dcaa.h"
+#include "core/reference/dynamic_coverage.h"
+#include "image/image_io.h"
+#include "image/image_metrics.h"
 #include "runtime/coverage_lists.h"
 #include "runtime/gl_context.h"
 #include "tests/gl_test.h"

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "core/dcaa.h"
-#include "core/dynamic_coverage.h"
-#include "core/halfplane_lut.h"
+#include "core/reference/dcaa.h"
+#include "core/reference/dynamic_coverage.h"
+#include "core/reference/halfplane_lut.h"
 
 namespace rsaa {
 namespace {

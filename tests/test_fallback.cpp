@@ -1,10 +1,10 @@
-// The fallback rule of core/fallback.h against its definition.
+// The fallback rule of core/rsaa/fallback.h against its definition.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/fallback.h"
-#include "core/offset_table.h"
+#include "core/rsaa/fallback.h"
+#include "core/rsaa/offset_table.h"
 
 namespace rsaa {
 namespace {

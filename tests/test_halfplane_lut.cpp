@@ -6,8 +6,8 @@
 #include <random>
 #include <set>
 
-#include "core/halfplane_lut.h"
-#include "core/line_case.h"
+#include "core/reference/halfplane_lut.h"
+#include "core/rsaa/line_case.h"
 
 namespace rsaa {
 namespace {

@@ -7,10 +7,10 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "core/atomic_file.h"
-#include "core/colour.h"
-#include "core/image_io.h"
-#include "core/image_metrics.h"
+#include "core/util/atomic_file.h"
+#include "core/util/colour.h"
+#include "image/image_io.h"
+#include "image/image_metrics.h"
 #include "tests/test_util.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"

@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/bilinear.h"
-#include "core/case_set.h"
-#include "core/line_case.h"
-#include "core/polygon.h"
+#include "core/rsaa/bilinear.h"
+#include "core/rsaa/case_set.h"
+#include "core/rsaa/line_case.h"
+#include "core/rsaa/polygon.h"
 
 namespace rsaa {
 namespace {

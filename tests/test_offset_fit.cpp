@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/case_set.h"
+#include "core/rsaa/case_set.h"
 #include "trainer/offset_fit.h"
 #include "trainer/train.h"
 

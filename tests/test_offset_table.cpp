@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "core/offset_table.h"
+#include "core/rsaa/offset_table.h"
 #include "tests/test_util.h"
 
 namespace rsaa {

@@ -1,7 +1,7 @@
 // The CPU reference post-process on hand-made images whose results are known exactly.
 #include <gtest/gtest.h>
 
-#include "core/postprocess_cpu.h"
+#include "core/rsaa/postprocess_cpu.h"
 
 #include <cmath>
 
@@ -83,7 +83,7 @@ TEST(PostprocessCpu, NonFiniteColoursNeverSpreadAndHdrPassesThrough) {
 }  // namespace
 }  // namespace rsaa
 
-#include "core/filtered_downsample.h"
+#include "core/reference/filtered_downsample.h"
 
 namespace rsaa {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/image_io.h"
+#include "image/image_io.h"
 #include "tests/test_util.h"
 
 namespace rsaa {

@@ -8,10 +8,10 @@
 #include <memory>
 #include <set>
 
-#include "core/image_io.h"
-#include "core/image_metrics.h"
-#include "core/offset_table.h"
-#include "core/postprocess_cpu.h"
+#include "image/image_io.h"
+#include "image/image_metrics.h"
+#include "core/rsaa/offset_table.h"
+#include "core/rsaa/postprocess_cpu.h"
 #include "runtime/gl_context.h"
 #include "tests/gl_test.h"
 #include "runtime/render.h"
@@ -347,7 +347,7 @@ TEST_F(Runtime, NonFiniteColoursDoNotSpreadInTheGlPostProcess) {
 }  // namespace
 }  // namespace rsaa
 
-#include "core/filtered_downsample.h"
+#include "core/reference/filtered_downsample.h"
 
 namespace rsaa {
 namespace {

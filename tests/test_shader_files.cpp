@@ -10,8 +10,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/conventions.h"
-#include "core/sample_pattern.h"
+#include "core/rsaa/conventions.h"
+#include "core/rsaa/sample_pattern.h"
 #include "runtime/fullscreen.h"
 #include "runtime/gl_objects.h"
 #include "runtime/render.h"

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <regex>
 
-#include "core/conventions.h"
-#include "core/offset_table.h"
+#include "core/rsaa/conventions.h"
+#include "core/rsaa/offset_table.h"
 #include "tests/test_util.h"
 #include "trainer/train.h"
 

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "core/case_set.h"
-#include "core/table_accuracy.h"
+#include "core/rsaa/case_set.h"
+#include "core/rsaa/table_accuracy.h"
 
 namespace rsaa {
 namespace {

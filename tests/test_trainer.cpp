@@ -5,8 +5,8 @@
 #include <cmath>
 #include <set>
 
-#include "core/case_set.h"
-#include "core/table_accuracy.h"
+#include "core/rsaa/case_set.h"
+#include "core/rsaa/table_accuracy.h"
 #include "trainer/offset_fit.h"
 #include "trainer/train.h"
 

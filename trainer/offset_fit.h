@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "core/bilinear.h"
-#include "core/vec2.h"
+#include "core/rsaa/bilinear.h"
+#include "core/util/vec2.h"
 
 namespace rsaa {
 

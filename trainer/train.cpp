@@ -5,9 +5,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/bilinear.h"
-#include "core/case_set.h"
-#include "core/fallback.h"
+#include "core/rsaa/bilinear.h"
+#include "core/rsaa/case_set.h"
+#include "core/rsaa/fallback.h"
 #include "trainer/offset_fit.h"
 
 namespace rsaa {

@@ -8,11 +8,11 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/case_set.h"
-#include "core/offset_table.h"
-#include "core/parallel.h"
-#include "core/sample_pattern.h"
-#include "core/table_accuracy.h"
+#include "core/rsaa/case_set.h"
+#include "core/rsaa/offset_table.h"
+#include "core/util/parallel.h"
+#include "core/rsaa/sample_pattern.h"
+#include "core/rsaa/table_accuracy.h"
 #include "trainer/offset_fit.h"
 
 namespace rsaa {

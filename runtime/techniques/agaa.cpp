@@ -1,15 +1,15 @@
 // agaa --samples 4|8 [--agaa-aggregates 1-4] [--agaa-k-pixels 4 | --agaa-k 0.1]: Aggregate
 // G-Buffer Anti-Aliasing (seed 001) with c aggregates (2 by default). (1) Visibility pre-pass: per sample depth, facet normal and primitive id, from
 // hardware 4x MSAA or 8 jittered single-sample passes (the d3d8x positions). (2) Aggregate
-// definition: a fullscreen pass clusters each pixel's samples (core/agaa.h). (3) Aggregate
+// definition: a fullscreen pass clusters each pixel's samples (core/reference/agaa.h). (3) Aggregate
 // G-buffer: the scene drawn again with conservative expansion; each fragment blends its shading
 // inputs, weighted by its visible samples per aggregate, into that aggregate's two targets.
 // (4) Shading once per aggregate (Toksvig-filtered specular) and resolve.
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/agaa.h"
-#include "core/conventions.h"
+#include "core/reference/agaa.h"
+#include "core/rsaa/conventions.h"
 #include "runtime/camera.h"
 #include "runtime/shader_library.h"
 #include "runtime/technique_testing.h"

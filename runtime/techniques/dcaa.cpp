@@ -1,8 +1,8 @@
 // dcaa [--rules surface|paper]: Decoupled Coverage Anti-Aliasing (seed 000) on the shared
 // fragment lists: 64 coverage samples from the half-plane LUT, at most 4 surfaces per pixel
 // merged by Algorithm 1 (paper) or with the surface rules, per sample depth resolve. The rules
-// are those of core/dcaa.h (the tests' oracle).
-#include "core/dcaa.h"
+// are those of core/reference/dcaa.h (the tests' oracle).
+#include "core/reference/dcaa.h"
 #include "runtime/coverage_lists.h"
 #include "runtime/techniques/techniques.h"
 

@@ -2,7 +2,7 @@
 // samples (the d3d16x positions) from the half-plane LUT, two slots per pixel. `rules` picks the
 // seed's literal update and resolve (evict the farther) or the surface rules, which are DCAA's
 // resolve program with 2 surfaces and dynamic_coverage_surface_settings(). Both rule sets, and
-// the choices for the cases the seed leaves open, are in core/dynamic_coverage.h (the oracle).
+// the choices for the cases the seed leaves open, are in core/reference/dynamic_coverage.h (the oracle).
 #include "runtime/coverage_lists.h"
 #include "runtime/techniques/techniques.h"
 

@@ -1,7 +1,7 @@
 // ssaa-filtered --kernel 1|2|3: the frame rendered at twice the width and height (4 shaded
-// samples a pixel), then one downsampling pass with the kernels of core/filtered_downsample.h.
-#include "core/conventions.h"
-#include "core/filtered_downsample.h"
+// samples a pixel), then one downsampling pass with the kernels of core/reference/filtered_downsample.h.
+#include "core/rsaa/conventions.h"
+#include "core/reference/filtered_downsample.h"
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {

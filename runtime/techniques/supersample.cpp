@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/random.h"
+#include "core/util/random.h"
 #include "runtime/camera.h"
 #include "runtime/techniques/techniques.h"
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "core/agaa.h"
-#include "core/dynamic_coverage.h"
-#include "core/vec2.h"
+#include "core/reference/agaa.h"
+#include "core/reference/dynamic_coverage.h"
+#include "core/util/vec2.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/gl_context.h"
 #include "runtime/scene_renderer.h"

@@ -10,9 +10,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/atomic_file.h"
-#include "core/image_io.h"
-#include "core/image_metrics.h"
+#include "core/util/atomic_file.h"
+#include "image/image_io.h"
+#include "image/image_metrics.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "tools/bench/copy_pass.h"

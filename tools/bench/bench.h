@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image_io.h"
+#include "image/image_io.h"
 #include "runtime/pass_timer.h"
 #include "runtime/technique_registry.h"
 

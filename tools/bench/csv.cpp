@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
+#include "core/util/atomic_file.h"
 
 namespace rsaa::bench {
 namespace {

@@ -9,8 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/colour.h"
-#include "core/parallel.h"
+#include "core/util/colour.h"
+#include "core/util/parallel.h"
 
 namespace rsaa {
 namespace {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "core/image.h"
-#include "core/mask.h"
-#include "core/offset_table.h"
+#include "core/util/image.h"
+#include "core/rsaa/mask.h"
+#include "core/rsaa/offset_table.h"
 #include "runtime/scene.h"
 
 namespace rsaa {

@@ -5,8 +5,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/colour.h"
-#include "core/image_io.h"
+#include "core/util/colour.h"
+#include "image/image_io.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/growth.h"
 

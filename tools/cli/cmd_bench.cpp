@@ -6,7 +6,7 @@
 #include <memory>
 #include <sstream>
 
-#include "core/atomic_file.h"
+#include "core/util/atomic_file.h"
 #include "runtime/gl_context.h"
 #include "runtime/scene.h"
 #include "tools/bench/bench.h"

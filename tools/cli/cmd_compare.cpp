@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/image_metrics.h"
+#include "image/image_metrics.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
 

@@ -8,9 +8,9 @@
 #include <memory>
 #include <optional>
 
-#include "core/atomic_file.h"
-#include "core/colour.h"
-#include "core/image_io.h"
+#include "core/util/atomic_file.h"
+#include "core/util/colour.h"
+#include "image/image_io.h"
 #include "runtime/camera.h"
 #include "runtime/gl_context.h"
 #include "runtime/render.h"

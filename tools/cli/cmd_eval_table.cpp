@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/case_set.h"
-#include "core/table_accuracy.h"
+#include "core/rsaa/case_set.h"
+#include "core/rsaa/table_accuracy.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
 #include "tools/cli/progress.h"

@@ -3,7 +3,7 @@
 #include <memory>
 #include <optional>
 
-#include "core/image_io.h"
+#include "image/image_io.h"
 #include "runtime/gl_context.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"

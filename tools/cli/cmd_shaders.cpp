@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/atomic_file.h"
-#include "core/offset_table.h"
+#include "core/util/atomic_file.h"
+#include "core/rsaa/offset_table.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/shader_library.h"
 #include "tools/cli/commands.h"

@@ -8,12 +8,12 @@
 #include <memory>
 #include <sstream>
 
-#include "core/parallel.h"
+#include "core/util/parallel.h"
 #include "runtime/gl_context.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/scene.h"
-#include "tools/bench/scene_tables.h"
-#include "core/atomic_file.h"
+#include "tools/scene_training/scene_tables.h"
+#include "core/util/atomic_file.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
 #include "tools/cli/out_dir.h"

@@ -10,8 +10,8 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "core/colour.h"
-#include "core/image_io.h"
+#include "core/util/colour.h"
+#include "image/image_io.h"
 #include "runtime/gl_context.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/atomic_file.h"
+#include "core/util/atomic_file.h"
 
 namespace rsaa::cli {
 

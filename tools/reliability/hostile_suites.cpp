@@ -20,9 +20,9 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "core/atomic_file.h"
-#include "core/image_io.h"
-#include "core/offset_table.h"
+#include "core/util/atomic_file.h"
+#include "image/image_io.h"
+#include "core/rsaa/offset_table.h"
 #include "tools/reliability/suite.h"
 
 namespace rsaa::reliability {

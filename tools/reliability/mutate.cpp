@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/random.h"
+#include "core/util/random.h"
 
 namespace rsaa::reliability {
 

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "core/atomic_file.h"
+#include "core/util/atomic_file.h"
 #include "tools/reliability/suite.h"
 
 namespace rsaa::reliability {

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/atomic_file.h"
-#include "core/image_io.h"
+#include "core/util/atomic_file.h"
+#include "image/image_io.h"
 #include "runtime/scene.h"
 #include "tools/reliability/mutate.h"
 #include "tools/reliability/suite.h"

@@ -2,8 +2,8 @@
 // answer each with a valid table or a TableError naming the file.
 #include <sstream>
 
-#include "core/atomic_file.h"
-#include "core/offset_table.h"
+#include "core/util/atomic_file.h"
+#include "core/rsaa/offset_table.h"
 #include "tools/reliability/mutate.h"
 #include "tools/reliability/suite.h"
 

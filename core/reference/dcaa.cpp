@@ -1,0 +1,156 @@
+#include "core/reference/dcaa.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rsaa {
+namespace {
+
+bool finite_fragment(const CoverageFragment& f) {
+  return std::isfinite(f.depth.at_centre) && std::isfinite(f.depth.ddx) && std::isfinite(f.depth.ddy) &&
+         std::isfinite(f.colour.r) && std::isfinite(f.colour.g) && std::isfinite(f.colour.b);
+}
+
+Normal3 viewer_normal_if_bad(Normal3 n) {
+  if (!(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) return {};
+  return n;
+}
+
+// Per coverage sample, the surface that covers it with the smallest depth at the sample (ties:
+// the earlier surface): how many samples each one shows.
+std::vector<int> front_counts(const std::vector<DcaaSurface>& surfaces, const SamplePattern& pattern) {
+  std::vector<int> counts(surfaces.size(), 0);
+  for (int s = 0; s < pattern.size(); ++s) {
+    int front = -1;
+    float front_depth = 0.0f;
+    for (int i = 0; i < int(surfaces.size()); ++i) {
+      if (!is_similar(surfaces[i].coverage, s)) continue;
+      const float z = surfaces[i].depth.at(pattern.positions[s]);
+      if (front < 0 || z < front_depth) front = i, front_depth = z;
+    }
+    if (front >= 0) ++counts[front];
+  }
+  return counts;
+}
+
+}  // namespace
+
+DcaaPixel::DcaaPixel(DcaaSettings settings, const SamplePattern* coverage_pattern)
+    : settings_(settings), pattern_(coverage_pattern) {
+  if (settings.per_sample_visibility && !coverage_pattern)
+    throw std::invalid_argument("DcaaPixel: per-sample visibility needs the coverage pattern");
+}
+
+DcaaSettings dcaa_settings(const std::string& rules) {
+  DcaaSettings s;
+  if (rules == "paper") return s;
+  if (rules != "surface") throw std::invalid_argument("dcaa --rules must be paper or surface, not '" + rules + "'");
+  s.per_sample_visibility = true;
+  s.merge_hidden = false;
+  s.merge_disjoint_only = true;
+  // Into the most overlapping surface only: measured +0.1 dB on the engine, +0.4 on distant boxes,
+  // equal elsewhere, against into every overlapping one.
+  s.second_merge_into_all = false;
+  return s;
+}
+
+DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b) {
+  const float wa = float(similar_count(a.coverage)), wb = float(similar_count(b.coverage));
+  const float sum = wa + wb;
+  const float ka = sum > 0.0f ? wa / sum : 0.5f, kb = 1.0f - ka;
+  DcaaSurface m;
+  m.coverage = a.coverage | b.coverage;
+  m.depth = {ka * a.depth.at_centre + kb * b.depth.at_centre, ka * a.depth.ddx + kb * b.depth.ddx,
+             ka * a.depth.ddy + kb * b.depth.ddy};
+  const Normal3 n{ka * a.normal.x + kb * b.normal.x, ka * a.normal.y + kb * b.normal.y,
+                  ka * a.normal.z + kb * b.normal.z};
+  const float len = std::sqrt(dot(n, n));
+  // Opposite normals average to nothing: keep the heavier one's.
+  m.normal = len > 1e-6f ? Normal3{n.x / len, n.y / len, n.z / len} : (wa >= wb ? a.normal : b.normal);
+  m.colour = {ka * a.colour.r + kb * b.colour.r, ka * a.colour.g + kb * b.colour.g, ka * a.colour.b + kb * b.colour.b};
+  return m;
+}
+
+DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
+  if (f.coverage == 0 || !finite_fragment(f)) return DcaaEvent::Ignored;
+  const DcaaSurface in{f.coverage, f.depth, viewer_normal_if_bad(f.normal), f.colour};
+
+  int best = -1;
+  float best_dot = 0.0f, best_overlap = 0.0f;
+  for (int i = 0; i < int(surfaces_.size()); ++i) {
+    const float d = dot(surfaces_[i].normal, in.normal);
+    if (!(d > settings_.cos_normal_threshold) || !depth_intervals_overlap(surfaces_[i].depth, in.depth)) continue;
+    if (settings_.merge_disjoint_only && (surfaces_[i].coverage & in.coverage)) continue;
+    const float overlap = depth_overlap_amount(surfaces_[i].depth, in.depth);
+    if (best < 0 || d > best_dot || (d == best_dot && overlap > best_overlap)) best = i, best_dot = d, best_overlap = overlap;
+  }
+  if (best >= 0) {
+    surfaces_[best] = merge_surfaces(surfaces_[best], in);
+    return DcaaEvent::Merged;
+  }
+  if (int(surfaces_.size()) < settings_.max_surfaces) {
+    surfaces_.push_back(in);
+    return DcaaEvent::Stored;
+  }
+
+  // Second merge attempt over the surfaces and the fragment (the last candidate).
+  std::vector<DcaaSurface> candidates = surfaces_;
+  candidates.push_back(in);
+  const int n = int(candidates.size());
+  std::vector<int> front_to_back(n);
+  for (int i = 0; i < n; ++i) front_to_back[i] = i;
+  std::stable_sort(front_to_back.begin(), front_to_back.end(), [&](int a, int b) {
+    return candidates[a].depth.at_centre < candidates[b].depth.at_centre;
+  });
+  Mask closer = 0;
+  int smallest = -1, smallest_visible = 0;
+  for (int k = 0; k < n; ++k) {
+    const int i = front_to_back[k];
+    const int visible = similar_count(candidates[i].coverage & ~closer);
+    closer |= candidates[i].coverage;
+    if (k > 0 && (smallest < 0 || visible <= smallest_visible)) smallest = i, smallest_visible = visible;
+  }
+  if (settings_.per_sample_visibility) {
+    const std::vector<int> counts = front_counts(candidates, *pattern_);
+    smallest = -1;
+    for (int k = n - 1; k >= 0; --k) {  // back to front: ties go to the farther
+      const int i = front_to_back[k];
+      if (smallest < 0 || counts[i] < smallest_visible) smallest = i, smallest_visible = counts[i];
+    }
+  }
+  int target = -1;
+  float target_overlap = 0.0f;
+  for (int i = 0; i < n && (settings_.merge_hidden || smallest_visible > 0); ++i) {
+    if (i == smallest || !depth_intervals_overlap(candidates[i].depth, candidates[smallest].depth)) continue;
+    const float overlap = depth_overlap_amount(candidates[i].depth, candidates[smallest].depth);
+    if (settings_.second_merge_into_all) candidates[i] = merge_surfaces(candidates[i], candidates[smallest]), target = i;
+    else if (target < 0 || overlap > target_overlap) target = i, target_overlap = overlap;
+  }
+  if (target >= 0 && !settings_.second_merge_into_all)
+    candidates[target] = merge_surfaces(candidates[target], candidates[smallest]);
+  surfaces_.clear();
+  for (int i = 0; i < n; ++i)
+    if (i != smallest) surfaces_.push_back(candidates[i]);
+  return target >= 0 ? DcaaEvent::SecondMerge : DcaaEvent::Discarded;
+}
+
+std::vector<int> DcaaPixel::visible_counts(const SamplePattern& pattern) const {
+  return front_counts(surfaces_, pattern);
+}
+
+Rgb DcaaPixel::resolve(const SamplePattern& pattern, Rgb background) const {
+  const std::vector<int> counts = visible_counts(pattern);
+  const float n = float(pattern.size());
+  int covered = 0;
+  Rgb c;
+  for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+    const float w = float(counts[i]) / n;
+    c.r += w * surfaces_[i].colour.r, c.g += w * surfaces_[i].colour.g, c.b += w * surfaces_[i].colour.b;
+    covered += counts[i];
+  }
+  const float rest = float(pattern.size() - covered) / n;
+  return {c.r + rest * background.r, c.g + rest * background.g, c.b + rest * background.b};
+}
+
+}  // namespace rsaa

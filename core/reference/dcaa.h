@@ -1,0 +1,96 @@
+// CPU reference of Decoupled Coverage Anti-Aliasing (DCAA, seed 000): at most 4 surfaces per pixel,
+// each a coverage mask over 64 samples, a depth plane, a facet normal and a colour; fragments are
+// merged into surfaces in primitive order by the paper's Algorithm 1, then resolved per coverage
+// sample by depth. The GL technique (runtime/techniques/dcaa.cpp, shaders/coverage_resolve.frag)
+// implements the same rules; this is the oracle its tests compare against.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/reference/coverage_fragment.h"
+#include "core/rsaa/sample_pattern.h"
+
+namespace rsaa {
+
+struct DcaaSettings {
+  int max_surfaces = 4;
+  float cos_normal_threshold = 0.98078528f;  // cos(pi / 16), the paper's aligned-normal rule
+  // Second merge, which surface counts as least visible: false (the paper) = the coarse depth
+  // resolve, front to back by depth at the pixel centre; true = per coverage sample by the depth
+  // planes (needs the coverage pattern), right where planes cross inside the pixel (a fin on
+  // the surface it stands on: extrapolated to the centre it lies behind that surface).
+  bool per_sample_visibility = false;
+  // Second merge of a surface with no sample left visible: the paper merges it like any other
+  // (true); false drops it, so a hidden surface (a back face, the far side of a fin) never blends
+  // its colour, normal and depth into a visible one.
+  bool merge_hidden = true;
+  // First merge only into a surface that covers none of the fragment's samples: fragments of one
+  // tessellated surface never cover a sample twice, two layers crossing at a small angle do
+  // (the paper's normal and depth tests alone merge them; its Fig. 10(b)). false: the paper.
+  bool merge_disjoint_only = false;
+  // Second merge into every surface whose depth interval overlaps the least visible one, as
+  // Algorithm 1 writes it (true), or only into the one that overlaps it most (false).
+  bool second_merge_into_all = true;
+};
+
+struct DcaaSurface {
+  Mask coverage = 0;
+  DepthPlane depth;
+  Normal3 normal;
+  Rgb colour;
+};
+
+// `dcaa --rules`: "paper" = Algorithm 1 as written (DcaaSettings{}); "surface" (the default) =
+// the answers dynamic coverage's surface rules give to the same questions (core/reference/dynamic_coverage.h):
+// first merge only between disjoint coverage, second merge choosing by per-sample visibility,
+// dropping hidden surfaces and merging into the most overlapping surface only. Throws
+// std::invalid_argument for another name.
+DcaaSettings dcaa_settings(const std::string& rules);
+
+// Merge(a, b) of the paper: normals, depth planes and colours averaged weighted by coverage
+// counts (the normal renormalised), coverage ORed. Returns the merged surface.
+DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b);
+
+// What insert() did with a fragment, for tests and statistics.
+enum class DcaaEvent { Ignored, Merged, Stored, SecondMerge, Discarded };
+
+class DcaaPixel {
+ public:
+  // `coverage_pattern` (kept by pointer): needed when settings.per_sample_visibility.
+  explicit DcaaPixel(DcaaSettings settings = {}, const SamplePattern* coverage_pattern = nullptr);
+
+  // Algorithm 1. Fragments with no coverage or a non-finite depth or colour are ignored (they
+  // cover no sample or cannot be weighted); a non-finite normal counts as facing the viewer.
+  //  1. First merge: among surfaces with n_i . n > cos(pi/16) whose depth intervals over the
+  //     pixel overlap, the best candidate (largest n_i . n, then largest overlap) takes it.
+  //  2. Else, when a slot is free, it becomes a new surface.
+  //  3. Else (full): coarse depth resolve of the surfaces plus the fragment (front to back by
+  //     depth at the centre, each masked by the closer ones); the one with the smallest visible
+  //     coverage, the front-most excluded (ties: the farther), is merged into the surface whose
+  //     depth interval overlaps it most, or dropped when none overlaps. With
+  //     per_sample_visibility the visible coverage is counted per sample instead (no exclusion;
+  //     ties: the farther at the centre); without merge_hidden a surface with none is dropped.
+  DcaaEvent insert(const CoverageFragment& fragment);
+
+  const std::vector<DcaaSurface>& surfaces() const { return surfaces_; }
+
+  // Final depth resolve: each coverage sample takes the surface that covers it with the
+  // smallest depth at the sample (ties: the earlier surface); samples no surface covers show
+  // the background (the clear colour: our scenes have no background geometry).
+  // C = sum_i n_i / N c_i + (N - sum n_i) / N background.
+  Rgb resolve(const SamplePattern& coverage_pattern, Rgb background) const;
+  // n_i of each surface after the depth resolve.
+  std::vector<int> visible_counts(const SamplePattern& coverage_pattern) const;
+
+ private:
+  DcaaSettings settings_;
+  const SamplePattern* pattern_;
+  std::vector<DcaaSurface> surfaces_;
+};
+
+// Bytes per pixel of the paper's design: 4 surfaces of 8 B coverage + 3 B depth + 4 B normal +
+// the G-buffer attributes, quoted by the paper as 112 B (against 128 B for 8x MSAA).
+constexpr double kDcaaPaperBytesPerPixel = 112.0;
+
+}  // namespace rsaa

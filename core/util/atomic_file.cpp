@@ -1,0 +1,242 @@
+#include "core/util/atomic_file.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <set>
+#include <stdexcept>
+#include <system_error>
+
+namespace rsaa {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string errno_text() { return std::strerror(errno); }
+
+// Closes a descriptor on every path out of a scope.
+struct Fd {
+  int fd;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+std::string kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
+int open_regular(const std::string& path, std::uint64_t max_bytes, const std::string& what,
+                 std::uint64_t& size) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(path + ": cannot open " + what + " (" + errno_text() + ")");
+  Fd guard{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0)
+    throw std::runtime_error(path + ": cannot stat " + what + " (" + errno_text() + ")");
+  if (!S_ISREG(st.st_mode))
+    throw LimitError(path + ": " + what + " is " + kind_of(st.st_mode) +
+                             "; only regular files are read");
+  size = static_cast<std::uint64_t>(st.st_size);
+  if (size > max_bytes)
+    throw LimitError(path + ": " + what + " is " + std::to_string(size) +
+                             " bytes; the limit is " + std::to_string(max_bytes) + " bytes");
+  guard.fd = -1;
+  return fd;
+}
+
+void write_temporary(const std::string& path, const std::string& temporary,
+                     const std::string& contents) {
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error(path + ": cannot write (" + errno_text() + ")");
+  Fd guard{fd};
+  std::size_t done = 0;
+  while (done < contents.size()) {
+    const ssize_t n = ::write(fd, contents.data() + done, contents.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const std::string error = errno_text();
+      ::unlink(temporary.c_str());
+      throw std::runtime_error(path + ": write failed (" + error + ")");
+    }
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+bool system_rename(const std::string& from, const std::string& to, std::string& error) {
+  if (::rename(from.c_str(), to.c_str()) == 0) return true;
+  error = errno_text();
+  return false;
+}
+
+std::string directory_of(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+}  // namespace
+
+std::string temporary_path_beside(const std::string& target) {
+  static std::atomic<unsigned> counter{0};
+  const fs::path t(target);
+  return (t.parent_path() / ("." + t.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                             std::to_string(counter++) + t.extension().string()))
+      .string();
+}
+
+std::size_t remove_stale_temporaries(const std::string& dir) {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const std::size_t at = name.find(".tmp-");
+    if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
+    std::size_t digits = at + 5, end_digits = digits;
+    while (end_digits < name.size() && std::isdigit(static_cast<unsigned char>(name[end_digits])))
+      ++end_digits;
+    if (end_digits == digits || end_digits - digits > 9) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(name.substr(digits, end_digits - digits)));
+    // Only a PID that no longer exists marks a dead run; a live one may be mid-commit.
+    if (pid <= 0 || pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    std::error_code ignored;
+    if (fs::is_regular_file(it->symlink_status(ignored)) && fs::remove(it->path(), ignored))
+      ++removed;
+  }
+  return removed;
+}
+
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files,
+                            const RenameFn& rename) {
+  std::set<std::string> dirs;
+  for (const auto& file : files) dirs.insert(directory_of(file.first));
+  for (const std::string& dir : dirs) remove_stale_temporaries(dir);
+
+  // A target must be a regular file or absent: anything else could not be restored.
+  for (const auto& file : files) {
+    struct stat st {};
+    if (::lstat(file.first.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+      throw std::runtime_error(file.first + ": exists and is " + kind_of(st.st_mode) +
+                               "; not replaced");
+  }
+
+  std::vector<std::string> temporaries, backups(files.size());
+  const auto remove_all = [](const std::vector<std::string>& paths) {
+    for (const std::string& p : paths)
+      if (!p.empty()) ::unlink(p.c_str());
+  };
+  try {
+    for (const auto& file : files) {
+      temporaries.push_back(temporary_path_beside(file.first));
+      write_temporary(file.first, temporaries.back(), file.second);
+    }
+    // Hard links keep the previous contents while the targets are replaced.
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      if (::access(files[i].first.c_str(), F_OK) != 0) continue;
+      backups[i] = temporary_path_beside(files[i].first);
+      if (::link(files[i].first.c_str(), backups[i].c_str()) != 0) {
+        const std::string error = errno_text();
+        backups[i].clear();
+        throw std::runtime_error(files[i].first + ": cannot keep the previous file while "
+                                 "replacing it (" + error + "); nothing was changed");
+      }
+    }
+  } catch (...) {
+    remove_all(temporaries);
+    remove_all(backups);
+    throw;
+  }
+
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::string error;
+    if (rename(temporaries[i], files[i].first, error)) continue;
+    // Undo the targets already replaced, newest first, so that the set stays as it was.
+    std::string undo_error;
+    for (std::size_t k = i; k-- > 0;) {
+      std::string e;
+      if (!backups[k].empty() ? !system_rename(backups[k], files[k].first, e)
+                              : ::unlink(files[k].first.c_str()) != 0)
+        undo_error += " " + files[k].first;
+      if (!backups[k].empty() && e.empty()) backups[k].clear();
+    }
+    remove_all(std::vector<std::string>(temporaries.begin() + i, temporaries.end()));
+    remove_all(backups);
+    throw std::runtime_error(files[i].first + ": cannot replace (" + error + "); " +
+                             (undo_error.empty() ? "the previous files are left as they were"
+                                                 : "could not restore:" + undo_error));
+  }
+  remove_all(backups);
+}
+
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+  write_files_atomically(files, system_rename);
+}
+
+void write_file_atomically(const std::string& path, const std::string& contents) {
+  write_files_atomically({{path, contents}});
+}
+
+std::uint64_t check_regular_file(const std::string& path, std::uint64_t max_bytes,
+                                 const std::string& what) {
+  std::uint64_t size = 0;
+  ::close(open_regular(path, max_bytes, what, size));
+  return size;
+}
+
+std::string read_whole_file(const std::string& path, std::uint64_t max_bytes,
+                            const std::string& what) {
+  std::uint64_t size = 0;
+  const Fd fd{open_regular(path, max_bytes, what, size)};
+  std::string text(static_cast<std::size_t>(size), '\0');
+  std::size_t done = 0;
+  // Read one byte past the size seen: a file that grows while being read is refused.
+  char extra;
+  for (;;) {
+    char* into = done < text.size() ? &text[done] : &extra;
+    const std::size_t want = done < text.size() ? text.size() - done : 1;
+    const ssize_t n = ::read(fd.fd, into, want);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw std::runtime_error(path + ": read failed (" + errno_text() + ")");
+    if (n == 0) break;
+    if (done >= text.size())
+      throw LimitError(path + ": " + what + " grew while being read");
+    done += static_cast<std::size_t>(n);
+  }
+  text.resize(done);
+  return text;
+}
+
+DirectoryLock::DirectoryLock(const std::string& dir, const std::string& purpose) {
+  fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) throw std::runtime_error(dir + ": cannot open the directory (" + errno_text() + ")");
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const bool busy = errno == EWOULDBLOCK;
+    const std::string error = errno_text();
+    ::close(fd_);
+    fd_ = -1;
+    throw std::runtime_error(dir + ": " +
+                             (busy ? "another process holds this directory for " + purpose +
+                                         "; wait for it to finish or choose another directory"
+                                   : "cannot lock the directory (" + error + ")"));
+  }
+}
+
+DirectoryLock::~DirectoryLock() {
+  if (fd_ >= 0) ::close(fd_);  // closing releases the flock
+}
+
+}  // namespace rsaa

@@ -1,0 +1,47 @@
+#include "image/image_metrics.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <opencv2/core.hpp>
+#include <opencv2/quality.hpp>
+
+#include "core/util/colour.h"
+
+namespace rsaa {
+
+ImageComparison compare_images(const DisplayImage& a, const DisplayImage& b, double luma_threshold) {
+  if (a.width != b.width || a.height != b.height)
+    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" +
+                                std::to_string(a.height) + " against " + std::to_string(b.width) +
+                                "x" + std::to_string(b.height));
+  ImageComparison c;
+  c.non_finite_a = a.non_finite_pixels;
+  c.non_finite_reference = b.non_finite_pixels;
+  double squared = 0.0;
+  std::size_t over = 0;
+  const std::size_t n = std::size_t(a.width) * a.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double d = double(a.rgb[3 * i + k]) - double(b.rgb[3 * i + k]);
+      squared += d * d;
+    }
+    const double ya = rec709_luma(a.rgb[3 * i] / 255.0, a.rgb[3 * i + 1] / 255.0, a.rgb[3 * i + 2] / 255.0);
+    const double yb = rec709_luma(b.rgb[3 * i] / 255.0, b.rgb[3 * i + 1] / 255.0, b.rgb[3 * i + 2] / 255.0);
+    over += std::abs(ya - yb) > luma_threshold;
+  }
+  c.mse = squared / (3.0 * double(n));
+  c.psnr_db = c.mse > 0 ? 10.0 * std::log10(255.0 * 255.0 / c.mse)
+                        : std::numeric_limits<double>::infinity();
+  c.luma_error_share = 100.0 * double(over) / double(n);
+  const cv::Mat ma(a.height, a.width, CV_8UC3, const_cast<std::uint8_t*>(a.rgb.data()));
+  const cv::Mat mb(b.height, b.width, CV_8UC3, const_cast<std::uint8_t*>(b.rgb.data()));
+  const cv::Scalar ssim = cv::quality::QualitySSIM::compute(ma, mb, cv::noArray());
+  c.ssim = (ssim[0] + ssim[1] + ssim[2]) / 3.0;
+  if (!c.defined()) c.psnr_db = c.ssim = c.mse = c.luma_error_share = std::numeric_limits<double>::quiet_NaN();
+  return c;
+}
+
+}  // namespace rsaa
