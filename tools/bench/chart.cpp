@@ -187,7 +187,7 @@ void plot_bars(const FigureTable& t, const ChartStyle& style, const std::string&
       if (!std::isfinite(v)) continue;
       const int xa = x0 + int((c - 1) * bar_w), xb = x0 + int(c * bar_w) - 2;
       cv::rectangle(canvas, cv::Point(xa, py(v)), cv::Point(xb, py(0)), line_colour(c - 1 + (series == 1 ? 2 : 0)), -1);
-      if (series <= 3) text(canvas, number(v), {xa, py(v) - 4}, 0.33);
+      if (series <= 3 && bar_w >= 24) text(canvas, number(v), {xa, py(v) - 4}, 0.3);
     }
     const std::string label = r < t.row_labels.size() && !t.row_labels[r].empty() ? t.row_labels[r] : number(t.rows[r][0]);
     text(canvas, label, {x0, height - bottom + 18}, 0.33);
