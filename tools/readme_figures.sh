@@ -6,7 +6,7 @@
 # Usage: tools/readme_figures.sh [--quick] [--only papers] [OUT_DIR]
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
-#   --only papers: just the papers' figures (rsaa figures, about 20 minutes; with --quick: seconds).
+#   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
