@@ -53,7 +53,8 @@ void validate(const TechniqueOptions& o) {
     dcaa_settings(o.rules);
   } else if (o.technique == "agaa") {
     const int n = samples_or(o, 8);
-    if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
+    if (n != 4 && n != 8 && n != 16)
+      bad("agaa --samples must be 4 (hardware), 8 or 16 (jittered), not " + std::to_string(n));
     if (!(o.agaa_k >= 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length >= 0");
     if (o.agaa_diffuse != "filtered" && o.agaa_diffuse != "plain") bad("agaa --agaa-diffuse must be filtered or plain");
     if (o.agaa_aggregates < 1 || o.agaa_aggregates > 4) bad("agaa --agaa-aggregates must be 1, 2, 3 or 4");

@@ -25,7 +25,7 @@ std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, boo
 // Sets the uniforms of coverage_resolve.frag's COVERAGE_DCAA variant: coverage samples and the
 // DcaaSettings (dcaa, and dyncov's surface rules).
 void configure_surface_resolve(GLuint program, const SamplePattern& pattern, const DcaaSettings& settings);
-// AGAA with settings.aggregates aggregates over `samples` (4: hardware MSAA, 8: jittered)
+// AGAA with settings.aggregates aggregates over `samples` (4: hardware MSAA, 8 or 16: jittered)
 // visibility samples; k_pixels > 0: k is that many pixel footprints (AgaaSettings::k_per_depth,
 // set per frame from the view), else settings.k in scene units.
 std::unique_ptr<Technique> make_agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height);
@@ -36,7 +36,7 @@ struct AgaaFrameData {
   int width = 0, height = 0, samples = 0;
   AgaaSettings settings;  // as used for the frame (k_per_depth from its view)
   std::vector<AgaaSample> samples_of_pixels;  // width * height * samples
-  std::vector<std::uint32_t> meta;            // width * height, agaa_samples.glsl's layout
+  std::vector<std::uint64_t> meta;            // width * height, agaa_samples.glsl's x | y << 32
   std::vector<AgaaAggregateSums> aggregates;  // width * height * settings.aggregates
   std::vector<Normal3> pixel_rays;            // width * height, view space
 };
