@@ -1,7 +1,7 @@
 // rsaa figures dcaa | agaa: the coverage family's own figures. DCAA's surface count is swept on
 // the CPU reference (core/dcaa.h) replaying the fragment lists the GL geometry pass built, so
 // every count sees the same fragments; the GL resolve (4 surfaces) is measured beside it as a
-// check. AGAA runs on GL with each c and visibility-sample count.
+// check. AGAA runs on GL with each c and 4, 8 and 16 visibility samples.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -193,7 +193,7 @@ Figure agaa_figure(const FigureOptions& o, const FigureProgress& progress) {
   for (const std::string& spec : o.scenes) {
     const std::string name = scene_short_name(spec);
     const auto frame = load_scene_frame(spec, o, progress);
-    for (int samples : {4, 8}) {
+    for (int samples : {4, 8, 16}) {
       part.table.columns.push_back(name + ", agaa " + std::to_string(samples) + "x");
       columns.emplace_back();
       for (int c = 1; c <= 4; ++c) {
@@ -215,8 +215,8 @@ Figure agaa_figure(const FigureOptions& o, const FigureProgress& progress) {
   part.style = {"AGAA: PSNR vs 64x SSAA against the aggregates per pixel (c)", "aggregates c", "PSNR dB", false,
                 {"msaa"}};
   std::ostringstream md;
-  md << "PSNR (dB) against 64x SSAA by the number of aggregates c, with 4 (hardware MSAA) and 8 (jittered) "
-        "visibility samples, "
+  md << "PSNR (dB) against 64x SSAA by the number of aggregates c, with 4 (hardware MSAA), 8 and 16 "
+        "(jittered) visibility samples, "
      << o.width << "x" << o.height << ":\n\n| c |";
   for (std::size_t c = 1; c < part.table.columns.size(); ++c) md << " " << part.table.columns[c] << " |";
   md << "\n| --- |";

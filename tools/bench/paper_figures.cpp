@@ -191,11 +191,16 @@ double paper_bytes(const TechniqueOptions& t) {
 }
 
 Figure memory_figure(const FigureOptions& o, const FigureProgress& progress) {
-  std::vector<TechniqueOptions> techniques = figure_techniques();
-  techniques.insert(techniques.end() - 1, technique_options("agaa", 4));
+  // The compared techniques, with DCAA's z-prepass and AGAA's other sample counts beside them.
   TechniqueOptions zpre = technique_options("dcaa");
   zpre.z_prepass = true;
-  techniques.insert(techniques.end() - 2, zpre);
+  std::vector<TechniqueOptions> techniques;
+  for (const TechniqueOptions& t : figure_techniques()) {
+    if (t.technique == "agaa") techniques.push_back(technique_options("agaa", 4));
+    techniques.push_back(t);
+    if (t.technique == "dcaa") techniques.push_back(zpre);
+  }
+  techniques.push_back(technique_options("agaa", 16));
   Figure f;
   f.name = "memory";
   Figure::Part part;

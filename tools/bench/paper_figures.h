@@ -6,7 +6,7 @@
 //           curve over thresholds;
 //   dcaa    DCAA: surfaces per pixel (histogram) and quality against the number of surfaces
 //           (2-8, the CPU reference replaying the GL fragment lists);
-//   agaa    AGAA: quality against c = 1-4 aggregates, with 4 and 8 visibility samples;
+//   agaa    AGAA: quality against c = 1-4 aggregates, with 4, 8 and 16 visibility samples;
 //   memory  bytes per pixel of each technique as allocated, beside each paper's fixed layout.
 #pragma once
 

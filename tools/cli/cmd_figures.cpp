@@ -66,7 +66,7 @@ Action add_figures_command(CLI::App& app) {
       "figures", "The papers' figures against 64x SSAA, each as CSV + PNG + Markdown: fig9 (RSAA's Figure 9, PSNR "
                  "per frame while the camera pulls back to sub-pixel geometry), fig1 (RSAA's Figure 1, pixels above "
                  "a luminance-error threshold), dcaa (surfaces per pixel, quality against 2-8 surfaces), agaa "
-                 "(quality against c = 1-4 aggregates, 4 and 8 samples), memory (bytes per pixel beside the "
+                 "(quality against c = 1-4 aggregates, 4, 8 and 16 samples), memory (bytes per pixel beside the "
                  "papers' layouts)");
   cmd->add_option("--figure", args->figure, "fig9 | fig1 | dcaa | agaa | memory | all")->capture_default_str();
   cmd->add_option("--scenes", args->scenes,
