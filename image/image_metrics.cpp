@@ -44,4 +44,22 @@ ImageComparison compare_images(const DisplayImage& a, const DisplayImage& b, dou
   return c;
 }
 
+std::vector<double> luma_error_shares(const DisplayImage& a, const DisplayImage& b,
+                                      const std::vector<double>& thresholds) {
+  if (a.width != b.width || a.height != b.height) throw std::invalid_argument("luma_error_shares: images differ in size");
+  for (double t : thresholds)
+    if (!std::isfinite(t)) throw std::invalid_argument("luma_error_shares: thresholds must be finite");
+  std::vector<std::size_t> over(thresholds.size(), 0);
+  const std::size_t n = std::size_t(a.width) * a.height;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ya = rec709_luma(a.rgb[3 * i] / 255.0, a.rgb[3 * i + 1] / 255.0, a.rgb[3 * i + 2] / 255.0);
+    const double yb = rec709_luma(b.rgb[3 * i] / 255.0, b.rgb[3 * i + 1] / 255.0, b.rgb[3 * i + 2] / 255.0);
+    const double error = std::abs(ya - yb);
+    for (std::size_t k = 0; k < thresholds.size(); ++k) over[k] += error > thresholds[k];
+  }
+  std::vector<double> shares;
+  for (std::size_t count : over) shares.push_back(n ? 100.0 * double(count) / double(n) : 0.0);
+  return shares;
+}
+
 }  // namespace rsaa

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "image/image_io.h"
 
@@ -21,5 +22,11 @@ struct ImageComparison {
 // Throws std::invalid_argument when the sizes differ.
 ImageComparison compare_images(const DisplayImage& a, const DisplayImage& reference,
                                double luma_threshold = 1.0 / 64.0);
+
+// The luminance-error share of compare_images() at each of `thresholds` (display units, [0, 1]),
+// in one pass: RSAA's Figure 1 as a curve. Percentages, in the order of `thresholds`. Throws
+// std::invalid_argument when the sizes differ or a threshold is not finite.
+std::vector<double> luma_error_shares(const DisplayImage& a, const DisplayImage& reference,
+                                      const std::vector<double>& thresholds);
 
 }  // namespace rsaa

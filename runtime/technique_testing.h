@@ -1,5 +1,5 @@
-// Read-back hooks of techniques, for the tests' CPU oracles: not part of the Technique
-// interface (runtime/technique.h).
+// Read-back hooks of techniques, for the tests' CPU oracles and the papers' figures: not part
+// of the Technique interface (runtime/technique.h).
 #pragma once
 
 #include <cstdint>
@@ -19,7 +19,7 @@ struct AgaaFrameData {
   int width = 0, height = 0, samples = 0;
   AgaaSettings settings;  // as used for the frame (k_per_depth from its view)
   std::vector<AgaaSample> samples_of_pixels;  // width * height * samples
-  std::vector<std::uint32_t> meta;            // width * height, agaa_samples.glsl's layout
+  std::vector<std::uint64_t> meta;            // width * height, agaa_samples.glsl's x | y << 32
   std::vector<AgaaAggregateSums> aggregates;  // width * height * settings.aggregates
   std::vector<Normal3> pixel_rays;            // width * height, view space
 };

@@ -14,7 +14,7 @@ layout(location = 0) out vec4 o_targets[8];
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint me = scene_primitive_order() + 1u;
-  uint meta = texelFetch(u_meta, p, 0).x;
+  uvec2 meta = texelFetch(u_meta, p, 0).xy;
   vec4 w = vec4(0.0);
   for (int s = 0; s < u_samples; ++s)
     if (agaa_sample_primitive(p, s) == me) w[agaa_aggregate_of(meta, s)] += 1.0;

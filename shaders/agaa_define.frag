@@ -3,7 +3,7 @@
 #include "rsaa_common.glsl"
 #include "agaa_samples.glsl"
 
-uniform vec2 u_sample_offsets[8];  // window space (+y up), from the pixel centre
+uniform vec2 u_sample_offsets[AGAA_MAX_SAMPLES];  // window space (+y up), from the pixel centre
 uniform mat4 u_inverse_projection;
 uniform vec2 u_viewport;
 uniform float u_k;            // AgaaSettings::k (scene units), used when u_k_per_depth is 0
@@ -11,11 +11,11 @@ uniform float u_k_per_depth;  // AgaaSettings::k_per_depth
 float k;
 uniform float u_min_separation;
 uniform int u_aggregates;  // c, 1..4
-out uint o_meta;
+out uvec2 o_meta;
 
-vec3 position[8];
-vec3 normal[8];
-bool valid[8];
+vec3 position[AGAA_MAX_SAMPLES];
+vec3 normal[AGAA_MAX_SAMPLES];
+bool valid[AGAA_MAX_SAMPLES];
 
 float distance_eq1(vec3 pa, vec3 na, vec3 pb, vec3 nb) {
   vec3 d = (pa - pb) / k;
@@ -38,7 +38,7 @@ void main() {
     ++count;
   }
   if (count == 0) {
-    o_meta = 0u;
+    o_meta = uvec2(0u);
     return;
   }
   mean_position /= float(count);
@@ -83,10 +83,10 @@ void main() {
     if (!candidate_separated) break;
     seeds[count_seeds++] = candidate;
   }
-  uint meta = uint(count_seeds) << 24;
+  uvec2 meta = uvec2(0u, uint(count_seeds) << 24);
   for (int s = 0; s < u_samples; ++s) {
     if (!valid[s]) continue;
-    meta |= 1u << uint(s);
+    meta.y |= 1u << uint(s);
     int nearest = 0;
     float nearest_d = distance_eq1(position[s], normal[s], position[seeds[0]], normal[seeds[0]]);
     for (int a = 1; a < count_seeds; ++a) {
@@ -96,7 +96,7 @@ void main() {
         nearest_d = d;
       }
     }
-    meta |= uint(nearest) << uint(8 + 2 * s);
+    meta.x |= uint(nearest) << uint(2 * s);
   }
   o_meta = meta;
 }

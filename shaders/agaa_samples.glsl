@@ -1,6 +1,6 @@
 // AGAA's visibility samples: per sample depth, compressed facet normal and primitive id (+1,
 // 0 = background), from a hardware multisampled pre-pass (AGAA_MULTISAMPLE, n = 4) or from n
-// jittered single-sample passes stored as array layers (n = 8).
+// jittered single-sample passes stored as array layers (n = 8 or 16).
 #ifndef RSAA_AGAA_SAMPLES_GLSL
 #define RSAA_AGAA_SAMPLES_GLSL
 
@@ -21,8 +21,11 @@ uvec2 agaa_sample_normal(ivec2 p, int s) { return texelFetch(u_sample_normal, iv
 uint agaa_sample_primitive(ivec2 p, int s) { return texelFetch(u_sample_primitive, ivec3(p, s), 0).x; }
 #endif
 
-// Aggregate metadata, one R32UI per pixel: bit s = sample s sees a surface, bits 8 + 2s and
-// 9 + 2s = its aggregate (0..3), bits 24-26 = the number of aggregates.
-uint agaa_aggregate_of(uint meta, int s) { return (meta >> uint(8 + 2 * s)) & 3u; }
+const int AGAA_MAX_SAMPLES = 16;
+
+// Aggregate metadata, one RG32UI per pixel (16 samples of 2 bits need a word of their own):
+// x: bits 2s and 2s + 1 = the aggregate (0..3) of sample s; y: bit s = sample s sees a surface,
+// bits 24-26 = the number of aggregates.
+uint agaa_aggregate_of(uvec2 meta, int s) { return (meta.x >> uint(2 * s)) & 3u; }
 
 #endif  // RSAA_AGAA_SAMPLES_GLSL

@@ -145,15 +145,19 @@ TEST_F(CoverageGl, DcaaBeatsNoAaAndListsGrowWhenTheyOverflow) {
 namespace rsaa {
 namespace {
 
-// AGAA 8x: the GL aggregate metadata against define_aggregates() on the read-back samples, and the
-// GL image against agaa_resolve() on the read-back aggregate sums.
+// AGAA 8x and 16x: the GL aggregate metadata against define_aggregates() on the read-back samples,
+// and the GL image against agaa_resolve() on the read-back aggregate sums.
 TEST_F(CoverageGl, AgaaEqualsItsCpuReferenceOnTheSameSamples) {
-  for (const auto& [name, c] : {std::pair{"builtin:default", 2}, std::pair{"builtin:fence", 4}}) {
+  struct Case {
+    const char* name;
+    int c, n;
+  };
+  for (const auto& [name, c, n] : {Case{"builtin:default", 2, 8}, Case{"builtin:fence", 4, 8}, Case{"builtin:fence", 4, 16}}) {
     const Scene scene = load_scene(name);
     const GpuScene gpu(scene);
     const int w = 96, h = 72;
     const View view = make_view(choose_camera(scene, std::nullopt), w, h);
-    TechniqueOptions options = technique_options("agaa", 8);
+    TechniqueOptions options = technique_options("agaa", n);
     options.agaa_aggregates = c;
     auto t = make_technique(options, w, h);
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, w, h);
@@ -164,23 +168,24 @@ TEST_F(CoverageGl, AgaaEqualsItsCpuReferenceOnTheSameSamples) {
     Image cpu(w, h);
     int meta_mismatches = 0, several_aggregates = 0;
     for (int i = 0; i < w * h; ++i) {
-      const std::vector<AgaaSample> samples(data.samples_of_pixels.begin() + i * 8, data.samples_of_pixels.begin() + (i + 1) * 8);
+      const std::vector<AgaaSample> samples(data.samples_of_pixels.begin() + i * n, data.samples_of_pixels.begin() + (i + 1) * n);
       const AgaaClusters clusters = define_aggregates(samples, data.settings);
-      std::uint32_t meta = std::uint32_t(clusters.count) << 24;
-      for (int s = 0; s < 8; ++s)
-        if (clusters.aggregate[s] >= 0) meta |= (1u << s) | (std::uint32_t(clusters.aggregate[s]) << (8 + 2 * s));
+      std::uint64_t meta = std::uint64_t(clusters.count) << (32 + 24);  // agaa_samples.glsl: x | y << 32
+      for (int s = 0; s < n; ++s)
+        if (clusters.aggregate[s] >= 0)
+          meta |= (std::uint64_t{1} << (32 + s)) | (std::uint64_t(clusters.aggregate[s]) << (2 * s));
       meta_mismatches += meta != data.meta[i];
       several_aggregates += clusters.count == c;
       cpu.pixels[i] = agaa_resolve({data.aggregates.begin() + c * i, data.aggregates.begin() + c * (i + 1)},
                                    data.pixel_rays[i], {bg.r, bg.g, bg.b}, data.settings.filtered_diffuse);
     }
-    EXPECT_GT(several_aggregates, 50) << name;             // edges make c aggregates
-    EXPECT_LE(meta_mismatches, w * h / 200) << name;       // float ties may differ
+    EXPECT_GT(several_aggregates, 50) << name << " " << n;        // edges make c aggregates
+    EXPECT_LE(meta_mismatches, w * h / 200) << name << " " << n;  // float ties may differ
     const DisplayImage cpu_image = to_display(cpu);
     int worst = 0;
     for (std::size_t i = 0; i < cpu_image.rgb.size(); ++i)
       worst = std::max(worst, std::abs(int(cpu_image.rgb[i]) - int(gl_image.rgb[i])));
-    EXPECT_LE(worst, 2) << name;
+    EXPECT_LE(worst, 2) << name << " " << n;
   }
 }
 

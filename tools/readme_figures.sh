@@ -1,16 +1,25 @@
 #!/usr/bin/env bash
 # Reproduces every number, table and picture of the README in one go: trainer speed and trades,
 # table accuracy, the per-scene comparison tables, the bench (tables, Pareto and pass plots,
-# crops), the scene-specific tables and the reliability report. Logs go to OUT_DIR/*.md; the
-# pictures the README shows are copied to docs/images/.
-# Usage: tools/readme_figures.sh [--quick] [OUT_DIR]
+# crops), the papers' figures, the scene-specific tables and the reliability report. Logs go to
+# OUT_DIR/*.md; the pictures the README shows are copied to docs/images/.
+# Usage: tools/readme_figures.sh [--quick] [--only papers] [OUT_DIR]
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
+#   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
-if [[ ${1:-} == --quick ]]; then quick=1; shift; fi
-if [[ ${1:-} == -h || ${1:-} == --help ]]; then sed -n 2,8p "$0" | sed 's/^# \{0,1\}//'; exit 0; fi
+only=""
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --quick) quick=1; shift ;;
+    --only) only=${2:?--only needs a step: papers}; shift 2 ;;
+    -h | --help) sed -n 2,9p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) break ;;
+  esac
+done
+[[ -z $only || $only == papers ]] || { echo "readme_figures.sh: --only $only: the steps run alone are: papers" >&2; exit 2; }
 default_out=out/figures
 [[ $quick == 1 ]] && default_out=out/figures-quick
 out=${1:-$default_out}
@@ -21,6 +30,24 @@ engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngin
 truck=/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf
 step() { echo "== $1 -> $out/$2" >&2; }
 started=$SECONDS
+
+# The papers' figures (rsaa figures): RSAA's Figures 9 and 1, DCAA's and AGAA's sweeps, memory.
+papers_figures() {
+  step "the papers' figures" papers.md
+  if [[ $quick == 1 ]]; then
+    $rsaa figures --quick --out-dir "$out/papers" >"$out/papers.md"
+    return
+  fi
+  $rsaa figures --out-dir "$out/papers" >"$out/papers.md"
+  for f in fig9 fig1-default fig1-2CylinderEngine dcaa-histogram dcaa-surfaces agaa memory; do
+    cp "$out/papers/$f.png" "docs/images/papers_$f.png"
+  done
+}
+if [[ $only == papers ]]; then
+  papers_figures
+  echo "the papers' figures done in $((SECONDS - started)) s" >&2
+  exit 0
+fi
 
 if [[ $quick == 1 ]]; then
   step "table accuracy (10^4 cases)" eval-table.md
@@ -36,6 +63,7 @@ if [[ $quick == 1 ]]; then
     >"$out/diagnosis.md"
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
+  papers_figures
   echo "quick figures done in $((SECONDS - started)) s; docs/ untouched" >&2
   exit 0
 fi
@@ -79,6 +107,7 @@ cp "$out/bench/passes-default.png" docs/images/bench_passes_default.png
 cp "$out/bench/pareto-2CylinderEngine.png" docs/images/bench_pareto_engine.png
 cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
 cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
+papers_figures
 mkdir -p "$out/scene-tables"
 for scene in builtin:default "$engine"; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}

@@ -1,6 +1,6 @@
-// agaa --samples 4|8 [--agaa-aggregates 1-4] [--agaa-k-pixels 4 | --agaa-k 0.1]: Aggregate
+// agaa --samples 4|8|16 [--agaa-aggregates 1-4] [--agaa-k-pixels 4 | --agaa-k 0.1]: Aggregate
 // G-Buffer Anti-Aliasing (seed 001) with c aggregates (2 by default). (1) Visibility pre-pass: per sample depth, facet normal and primitive id, from
-// hardware 4x MSAA or 8 jittered single-sample passes (the d3d8x positions). (2) Aggregate
+// hardware 4x MSAA or 8 or 16 jittered single-sample passes (the d3d8x or d3d16x positions). (2) Aggregate
 // definition: a fullscreen pass clusters each pixel's samples (core/reference/agaa.h). (3) Aggregate
 // G-buffer: the scene drawn again with conservative expansion; each fragment blends its shading
 // inputs, weighted by its visible samples per aggregate, into that aggregate's two targets.
@@ -24,8 +24,10 @@ class Agaa : public Technique {
       : samples_(samples),
         settings_(settings),
         k_pixels_(k_pixels),
-        pattern_(samples == 4 ? query_gl_sample_pattern(4) : builtin_pattern("d3d8x")),
-        meta_(gl::make_texture_2d(GL_R32UI, width, height)),
+        pattern_(samples == 4   ? query_gl_sample_pattern(4)
+                 : samples == 8 ? builtin_pattern("d3d8x")
+                                : builtin_pattern("d3d16x")),
+        meta_(gl::make_texture_2d(GL_RG32UI, width, height)),
         define_(make_fullscreen_program("agaa_define.frag", defines())),
         accumulate_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                       {GL_GEOMETRY_SHADER, gl::shader_source("coverage_fragments.geom")},
@@ -139,8 +141,8 @@ class Agaa : public Technique {
     gl::check("agaa");
   }
 
-  // Per sample: depth 4 + normal 4 + primitive id 4; per aggregate 2 x RGBA32F; metadata 4.
-  double bytes_per_pixel() const override { return 12.0 * samples_ + 32.0 * settings_.aggregates + 4.0; }
+  // Per sample: depth 4 + normal 4 + primitive id 4; per aggregate 2 x RGBA32F; metadata 8.
+  double bytes_per_pixel() const override { return 12.0 * samples_ + 32.0 * settings_.aggregates + 8.0; }
 
   AgaaFrameData read_back(const View& view) const {
     if (samples_ == 4) throw std::logic_error("agaa: multisampled buffers cannot be read back");
@@ -148,12 +150,12 @@ class Agaa : public Technique {
     const std::size_t pixels = std::size_t(w) * h;
     std::vector<float> depth(pixels * n);
     std::vector<std::uint16_t> normal(pixels * n * 2);
-    std::vector<std::uint32_t> primitive(pixels * n), meta(pixels);
+    std::vector<std::uint32_t> primitive(pixels * n), meta(pixels * 2);
     glGetTextureImage(depth_.get(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
     glGetTextureImage(normal_.get(), 0, GL_RG_INTEGER, GL_UNSIGNED_SHORT, GLsizei(normal.size() * 2), normal.data());
     glGetTextureImage(primitive_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(primitive.size() * 4),
                       primitive.data());
-    glGetTextureImage(meta_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(meta.size() * 4), meta.data());
+    glGetTextureImage(meta_.get(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(meta.size() * 4), meta.data());
     const int c = settings_.aggregates;
     std::vector<std::vector<float>> sums(2 * c, std::vector<float>(pixels * 4));
     for (int i = 0; i < 2 * c; ++i)
@@ -186,7 +188,7 @@ class Agaa : public Technique {
           const float nx = normal[2 * i] / 16383.0f - 2.0f, ny = normal[2 * i + 1] / 16383.0f - 2.0f;
           sample.normal = {nx, ny, std::sqrt(std::max(0.0f, 1.0f - nx * nx - ny * ny))};
         }
-        out.meta[pixel] = meta[gl_pixel];
+        out.meta[pixel] = meta[2 * gl_pixel] | std::uint64_t(meta[2 * gl_pixel + 1]) << 32;
         for (int a = 0; a < c; ++a) {
           const float* albedo = &sums[2 * a][gl_pixel * 4];
           const float* geometry = &sums[2 * a + 1][gl_pixel * 4];
@@ -232,11 +234,12 @@ AgaaFrameData read_back_agaa(Technique& agaa, const View& view) {
 }
 
 TechniqueKind agaa_technique() {
-  return {"agaa", "Aggregate G-buffer Anti-Aliasing: 4 (hardware) or 8 (jittered) visibility samples, c aggregates",
+  return {"agaa", "Aggregate G-buffer Anti-Aliasing: 4 (hardware), 8 or 16 (jittered) visibility samples, c aggregates",
           [](const TechniqueOptions& o) {
             const auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
             const int n = samples_or(o, 8);
-            if (n != 4 && n != 8) bad("agaa --samples must be 4 (hardware) or 8 (jittered), not " + std::to_string(n));
+            if (n != 4 && n != 8 && n != 16)
+              bad("agaa --samples must be 4 (hardware), 8 or 16 (jittered), not " + std::to_string(n));
             if (!(o.agaa_k >= 0.0) || !std::isfinite(o.agaa_k)) bad("agaa --agaa-k must be a finite length >= 0");
             if (o.agaa_diffuse != "filtered" && o.agaa_diffuse != "plain") bad("agaa --agaa-diffuse must be filtered or plain");
             if (o.agaa_aggregates < 1 || o.agaa_aggregates > 4) bad("agaa --agaa-aggregates must be 1, 2, 3 or 4");

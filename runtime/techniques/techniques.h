@@ -47,7 +47,7 @@ std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, boo
 // Sets the uniforms of coverage_resolve.frag's COVERAGE_DCAA variant: coverage samples and the
 // DcaaSettings (dcaa, and dyncov's surface rules).
 void configure_surface_resolve(GLuint program, const SamplePattern& pattern, const DcaaSettings& settings);
-// AGAA with settings.aggregates aggregates over `samples` (4: hardware MSAA, 8: jittered)
+// AGAA with settings.aggregates aggregates over `samples` (4: hardware MSAA, 8 or 16: jittered)
 // visibility samples; k_pixels > 0: k is that many pixel footprints (AgaaSettings::k_per_depth,
 // set per frame from the view), else settings.k in scene units.
 std::unique_ptr<Technique> make_agaa(int samples, AgaaSettings settings, float k_pixels, int width, int height);

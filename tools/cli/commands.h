@@ -19,5 +19,6 @@ Action add_bench_command(CLI::App& app);
 Action add_plot_command(CLI::App& app);
 Action add_diagnose_command(CLI::App& app);
 Action add_shaders_command(CLI::App& app);
+Action add_figures_command(CLI::App& app);
 
 }  // namespace rsaa::cli

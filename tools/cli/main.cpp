@@ -65,6 +65,7 @@ int main(int argc, char** argv) {
   add(rsaa::cli::add_plot_command);
   add(rsaa::cli::add_diagnose_command);
   add(rsaa::cli::add_shaders_command);
+  add(rsaa::cli::add_figures_command);
 
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;

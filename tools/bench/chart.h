@@ -1,0 +1,37 @@
+// A numeric table written as CSV and drawn as a line or bar chart (PNG, OpenCV): the papers'
+// figures (rsaa figures) are each one or more of these.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rsaa::bench {
+
+struct FigureTable {
+  std::vector<std::string> columns;        // the first is the x axis (or the bar categories)
+  std::vector<std::vector<double>> rows;   // each as many cells as columns
+  std::vector<std::string> row_labels;     // bar charts: a label per row (empty: the x value)
+
+  // Throws std::invalid_argument when a row's size differs from the columns'.
+  void add(std::vector<double> row, const std::string& label = "");
+  std::size_t column(const std::string& name) const;  // throws std::invalid_argument if absent
+};
+
+// Header row, then one row per line; the text columns are quoted (RFC 4180), numbers with 6
+// significant digits. With row labels, a "label" column comes first.
+std::string table_csv(const FigureTable& table);
+
+struct ChartStyle {
+  std::string title, x_label, y_label;
+  bool log_x = false;
+  // Lines whose name contains one of these are drawn dashed (the baselines a curve is read against).
+  std::vector<std::string> dashed;
+};
+
+// One line per column after the first against the first column; the legend names each line.
+void plot_lines(const FigureTable& table, const ChartStyle& style, const std::string& png_path);
+// Grouped bars: one group per row (labelled by row_labels), one bar per column after the first,
+// the value written above each bar.
+void plot_bars(const FigureTable& table, const ChartStyle& style, const std::string& png_path);
+
+}  // namespace rsaa::bench
