@@ -73,9 +73,9 @@ struct RsaaSettings {
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver); "msaa"
   // (experimental) draws once into a multisample target with per-sample shading, which needs the
   // driver's sample positions for that count to be the table's (gl4x on Mesa llvmpipe; d3d8x on
-  // GPUs whose 8x is the standard pattern); refused where the driver cannot. On llvmpipe its masks
-  // differ from the jittered ones on detailed models (2CylinderEngine, RSAA 4x: 35.1 dB against
-  // 39.0), a cause not found yet, so it is not the default.
+  // GPUs whose 8x is the standard pattern); refused where the driver cannot. Its masks equal the
+  // jittered pre-pass's (tests/test_msaa_prepass.cpp; pre-pass authentication up to float ties);
+  // on llvmpipe it is slower, so it is not the default.
   std::string prepass = "jittered";
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
 };
