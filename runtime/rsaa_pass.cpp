@@ -28,6 +28,10 @@ struct RsaaPass::Objects {
   gl::Texture subsample_depth, table;
   gl::Texture codes_ms, depth_ms;  // multisample pre-pass: sample i = subsample i
   gl::Framebuffer multisample_target;
+  // Union pre-pass (2m subsamples from two m-sample draws): the shifted draw's codes, sample i =
+  // subsample m + i of the pixel that contains the point it sees.
+  gl::Texture codes_ms2;
+  gl::Framebuffer multisample_target2;
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Program subsample_program, post_program;
   gl::CachedFramebuffer resolve_target;
@@ -95,6 +99,36 @@ bool driver_samples_pattern(const SamplePattern& pattern) {
   const SamplePattern driver = query_gl_sample_pattern(n);
   for (int i = 0; i < n; ++i)
     if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
+  return true;
+}
+
+// Whether the driver can run the pre-pass as two m-sample draws for a 2m-subsample `pattern`:
+// subsamples 0..m-1 are the driver's m positions and m..2m-1 the same shifted by one sub-pixel
+// offset, wrapped into the pixel (the union pattern). Sets `shift` (pixel space, +y down) and
+// `raster` (per shifted sample i: the raster pixel whose sample i sees subsample m + i of pixel
+// P is P + raster[i], window space).
+bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector<glm::ivec2>& raster) {
+  GLint max_samples = 0, max_integer_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
+  const int n = pattern.size(), m = n / 2;
+  if (n % 2 != 0 || m < 2 || m > max_samples || m > max_integer_samples) return false;
+  const SamplePattern driver = query_gl_sample_pattern(m);
+  for (int i = 0; i < m; ++i)
+    if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
+  const auto wrap = [](double v) { return v - std::floor(v + 0.5); };  // into [-0.5, 0.5)
+  const Vec2 d0 = pattern.positions[m] - driver.positions[0];
+  shift = {wrap(d0.x), wrap(d0.y)};
+  if (!(length(shift) > 1e-6)) return false;
+  raster.clear();
+  for (int i = 0; i < m; ++i) {
+    const Vec2 seen = driver.positions[i] + shift;  // relative to the raster pixel's centre
+    const Vec2 u = pattern.positions[m + i];
+    if (std::abs(wrap(seen.x) - u.x) > 1e-6 || std::abs(wrap(seen.y) - u.y) > 1e-6) return false;
+    // The point seen is at R's centre + seen = P's centre + u: R - P = u - seen (pixel space).
+    const Vec2 step = {std::round(u.x - seen.x), std::round(u.y - seen.y)};
+    raster.push_back({int(step.x), int(-step.y)});  // R - P in window space (+y up)
+  }
   return true;
 }
 
@@ -210,13 +244,24 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   if (settings.prepass != "jittered" && settings.prepass != "msaa")
     throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
   multisample_ = settings.prepass == "msaa" && driver_samples_pattern(pattern_);
-  if (settings.prepass == "msaa" && !multisample_)
-    throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
-                                "-sample integer target at the positions of pattern '" + pattern_.name + "'");
+  std::vector<glm::ivec2> union_raster;
+  if (settings.prepass == "msaa" && !multisample_) {
+    multisample_ = union_ = driver_samples_union(pattern_, union_shift_, union_raster);
+    if (!multisample_)
+      throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
+                                  "-sample integer target at the positions of pattern '" + pattern_.name +
+                                  "', nor two " + std::to_string(n / 2) + "-sample draws whose union they are");
+  }
   if (multisample_) {
-    gl_->codes_ms = gl::make_texture_2d_multisample(single_code_format(settings.code_bits), width, height, n);
-    gl_->depth_ms = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, n);
+    const int m = union_ ? n / 2 : n;
+    const GLenum format = single_code_format(settings.code_bits);
+    gl_->codes_ms = gl::make_texture_2d_multisample(format, width, height, m);
+    gl_->depth_ms = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, m);
     gl_->multisample_target = gl::make_framebuffer({{gl_->codes_ms.get()}}, {gl_->depth_ms.get()});
+    if (union_) {
+      gl_->codes_ms2 = gl::make_texture_2d_multisample(format, width, height, m);
+      gl_->multisample_target2 = gl::make_framebuffer({{gl_->codes_ms2.get()}}, {gl_->depth_ms.get()});
+    }
   } else {
     gl_->subsample_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
     for (int k = 0; k < (n + 3) / 4; ++k) {
@@ -230,6 +275,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
                         "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n";
   if (multisample_) defines += "#define RSAA_PREPASS_MSAA\n";
+  if (union_) defines += "#define RSAA_PREPASS_MSAA_UNION\n#define RSAA_MS_SAMPLES " + std::to_string(n / 2) + "\n";
   if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
   else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
   else if (settings.similarity != "sadp")
@@ -249,6 +295,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   glProgramUniform2iv(post, glGetUniformLocation(post, "u_neighbours"), n, glm::value_ptr(steps[0]));
   const GLuint pre = gl_->subsample_program.get();
   if (multisample_) glProgramUniform2iv(pre, glGetUniformLocation(pre, "u_neighbours"), n, glm::value_ptr(steps[0]));
+  if (union_)
+    glProgramUniform2iv(post, glGetUniformLocation(post, "u_union_raster"), n / 2, glm::value_ptr(union_raster[0]));
   gl::check("creating the RSAA pass");
 }
 RsaaPass::~RsaaPass() = default;
@@ -280,17 +328,28 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
       throw std::logic_error("RSAA pre-pass: the draw callback drew with program " + std::to_string(current) +
                              ", not the pre-pass program " + std::to_string(program) + " it was given");
   };
-  if (multisample_) {  // one draw, the fragment shader run once per covered sample
-    const GLuint fb = gl_->multisample_target.get();
-    glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  if (multisample_) {  // one draw (two for a union), the fragment shader run once per covered sample
     const GLboolean sample_shading = glIsEnabled(GL_SAMPLE_SHADING);
     GLfloat min_sample_shading = 0.0f;
     glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &min_sample_shading);
     glEnable(GL_SAMPLE_SHADING);
     glMinSampleShading(1.0f);
-    draw_checked({0.0f, 0.0f});
+    const GLint shift = glGetUniformLocation(program, "u_shift");
+    const GLint sample_base = glGetUniformLocation(program, "u_sample_base");
+    for (int draw = 0; draw < (union_ ? 2 : 1); ++draw) {
+      const GLuint fb = (draw == 0 ? gl_->multisample_target : gl_->multisample_target2).get();
+      glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
+      glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+      glBindFramebuffer(GL_FRAMEBUFFER, fb);
+      // The shifted draw: the image moves by -shift, so that raster sample i sees the point at
+      // its position + shift (window space in the shader).
+      const Vec2 d = draw == 0 ? Vec2{0.0, 0.0} : union_shift_;
+      const Vec2 d_gl = pixel_to_gl(d);
+      glProgramUniform2f(program, shift, float(d_gl.x), float(d_gl.y));
+      glProgramUniform1i(program, sample_base, draw == 0 ? 0 : pattern_.size() / 2);
+      gl::set_pass_state(true);
+      draw_checked(draw == 0 ? glm::vec2(0.0f) : jitter_ndc_for_sample(d.x, d.y, frame.width, frame.height));
+    }
     glMinSampleShading(min_sample_shading);
     if (!sample_shading) glDisable(GL_SAMPLE_SHADING);
     gl::check("RSAA pre-pass (multisample)");
@@ -338,6 +397,10 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   if (multisample_) {
     set_uniform(program, "u_codes_ms", 4);
     glBindTextureUnit(4, gl_->codes_ms.get());
+  }
+  if (union_) {
+    set_uniform(program, "u_codes_ms2", 5);
+    glBindTextureUnit(5, gl_->codes_ms2.get());
   }
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) {
     set_uniform(program, ("u_codes[" + std::to_string(k) + "]").c_str(), int(4 + k));

@@ -139,6 +139,8 @@ class RsaaPass {
   RsaaSettings settings_;
   SamplePattern pattern_;
   bool multisample_ = false;
+  bool union_ = false;   // the multisample pre-pass as two draws of half the samples (union pattern)
+  Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   int width_, height_;
   std::unique_ptr<Objects> gl_;
 };

@@ -14,6 +14,12 @@ uniform usampler2D u_centre_normal;
 uniform sampler2D u_centre_depth;
 #ifdef RSAA_PREPASS_MSAA
 uniform usampler2DMS u_codes_ms;  // sample i = subsample i
+#ifdef RSAA_PREPASS_MSAA_UNION
+// Union pattern: u_codes_ms holds subsamples 0..RSAA_MS_SAMPLES-1; the shifted draw's sample i
+// is subsample RSAA_MS_SAMPLES + i of the pixel at its raster pixel - u_union_raster[i].
+uniform usampler2DMS u_codes_ms2;
+uniform ivec2 u_union_raster[RSAA_MS_SAMPLES];
+#endif
 #else
 uniform usampler2D u_codes[RSAA_CODE_TEXTURES];
 #endif
@@ -37,7 +43,16 @@ void main() {
 #endif
   bool any_different = false, any_uncovered = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-#ifdef RSAA_PREPASS_MSAA
+#if defined(RSAA_PREPASS_MSAA_UNION)
+    if (i < RSAA_MS_SAMPLES) {
+      codes[i] = texelFetch(u_codes_ms, pixel, i).x;
+    } else {
+      // Seen from outside the image (the shifted draw's first column or row): no code, similar.
+      ivec2 r = pixel + u_union_raster[i - RSAA_MS_SAMPLES];
+      bool inside = all(greaterThanEqual(r, ivec2(0))) && all(lessThan(r, ivec2(u_viewport)));
+      codes[i] = inside ? texelFetch(u_codes_ms2, r, i - RSAA_MS_SAMPLES).x : 1u;
+    }
+#elif defined(RSAA_PREPASS_MSAA)
     codes[i] = texelFetch(u_codes_ms, pixel, i).x;
 #else
     codes[i] = code_texels[i / 4][i % 4];

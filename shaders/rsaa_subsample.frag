@@ -24,6 +24,8 @@ uniform vec2 u_viewport;
 uniform uint u_primitive_base;
 #ifdef RSAA_PREPASS_MSAA
 uniform ivec2 u_neighbours[RSAA_SAMPLE_COUNT];  // nearest outside pixel per subsample, window space
+uniform vec2 u_shift;       // window space: the point a sample sees is its position + u_shift
+uniform int u_sample_base;  // subsample index of this draw's sample 0
 #else
 uniform ivec2 u_neighbour;  // nearest outside pixel of this subsample, window space
 #endif
@@ -37,7 +39,18 @@ vec3 centre_position(ivec2 pixel) {
 }
 
 void main() {
+#ifdef RSAA_PREPASS_MSAA
+  // The point this sample sees (window space) and the pixel that contains it: the sample's own
+  // pixel, but for the shifted second draw of a union pattern (RSAA_PREPASS_MSAA_UNION).
+  vec2 window = floor(gl_FragCoord.xy) + gl_SamplePosition + u_shift;
+  ivec2 pixel = ivec2(floor(window));
+  if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, ivec2(u_viewport)))) {
+    o_code = uvec4(1u);  // a point outside the image: no pixel reads it
+    return;
+  }
+#else
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+#endif
   // Shortcut: the triangle that covers this subsample also covers the centre.
   if (texelFetch(u_centre_primitive, pixel, 0).x == u_primitive_base + uint(gl_PrimitiveID) + 1u) {
     o_code = uvec4(1u);  // decodes to 0
@@ -54,9 +67,8 @@ void main() {
   // (per-sample shading, interpolateAtSample/AtOffset alike) slides the point along the view ray
   // (relative depth error 4e-4 median, up to 0.17 on 2CylinderEngine), which made same-surface
   // subsamples look dissimilar.
-  vec3 ps = rsaa_view_position(vec2(pixel) + gl_SamplePosition, gl_FragCoord.z, u_inverse_projection,
-                               u_viewport);
-  ivec2 neighbour_step = u_neighbours[gl_SampleID];
+  vec3 ps = rsaa_view_position(window, gl_FragCoord.z, u_inverse_projection, u_viewport);
+  ivec2 neighbour_step = u_neighbours[u_sample_base + gl_SampleID];
 #else
   vec3 ps = f_in.view_position;
   ivec2 neighbour_step = u_neighbour;
