@@ -47,7 +47,8 @@ void main() {
     if (i < RSAA_MS_SAMPLES) {
       codes[i] = texelFetch(u_codes_ms, pixel, i).x;
     } else {
-      // Seen from outside the image (the shifted draw's first column or row): no code, similar.
+      // Its raster pixel is outside the image (one column and one row at the edge, by the
+      // shift's direction): the shifted draw has no code there; call it similar.
       ivec2 r = pixel + u_union_raster[i - RSAA_MS_SAMPLES];
       bool inside = all(greaterThanEqual(r, ivec2(0))) && all(lessThan(r, ivec2(u_viewport)));
       codes[i] = inside ? texelFetch(u_codes_ms2, r, i - RSAA_MS_SAMPLES).x : 1u;
