@@ -20,8 +20,8 @@
 // field, so a forgotten or wrong binding is an error, not a wrong image.
 //
 // THE PRE-PASS CALLBACK. render_subsamples() calls `draw_geometry(program, jitter_ndc)` once
-// per subsample (prepass "msaa": once, or twice for a union pattern), with its own framebuffer bound, `program` current, the viewport set to the
-// frame, depth test on (GL_LESS, depth writes on), blending and scissor test off. The callback
+// per subsample (prepass "msaa": once, or twice for a union pattern), with its own framebuffer
+// bound, `program` current, the viewport set to the frame, depth test on (GL_LESS, depth writes on), blending and scissor test off. The callback
 // draws the same geometry as the 1x frame with `program` (render_subsamples() throws
 // std::logic_error if another program is current when it returns), after setting on it:
 //   vertex attributes  0 position (vec3, world space: the pre-pass applies no model matrix,
