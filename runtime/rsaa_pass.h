@@ -21,9 +21,10 @@
 //
 // THE PRE-PASS CALLBACK. render_subsamples() calls `draw_geometry(program, jitter_ndc)` once
 // per subsample (prepass "msaa": once, or twice for a union pattern), with its own framebuffer
-// bound, `program` current, the viewport set to the frame, depth test on (GL_LESS, depth writes on), blending and scissor test off. The callback
-// draws the same geometry as the 1x frame with `program` (render_subsamples() throws
-// std::logic_error if another program is current when it returns), after setting on it:
+// bound, `program` current, the viewport set to the frame, depth test on (GL_LESS, depth writes
+// on), blending and scissor test off. The callback draws the same geometry as the 1x frame
+// with `program` (render_subsamples() throws std::logic_error if another program is current when
+// it returns), after setting on it:
 //   vertex attributes  0 position (vec3, world space: the pre-pass applies no model matrix,
 //                      so instanced, skinned or morphed geometry is baked into a buffer first,
 //                      as examples/02_own_vertex_stage.cpp does), 1 normal, 2 uv, 3 albedo
@@ -73,9 +74,12 @@ struct RsaaSettings {
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver); "msaa"
   // (experimental) draws once into a multisample target with per-sample shading, which needs the
   // driver's sample positions for that count to be the table's (gl4x on Mesa llvmpipe; d3d8x on
-  // GPUs whose 8x is the standard pattern); refused where the driver cannot. Its masks equal the
-  // jittered pre-pass's (tests/test_msaa_prepass.cpp; pre-pass authentication up to float ties);
-  // on llvmpipe it is slower, so it is not the default.
+  // GPUs whose 8x is the standard pattern), or, for a table of 2m subsamples that are the driver's
+  // m positions and the same shifted by one sub-pixel offset (a union pattern, such as
+  // tables/custom-gl4x-union.json), twice into m-sample targets, the second draw shifted;
+  // refused where the driver can do neither. Its masks equal the jittered pre-pass's
+  // (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's outermost
+  // pixels); on llvmpipe it is slower, so it is not the default.
   std::string prepass = "jittered";
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
 };
