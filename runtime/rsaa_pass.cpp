@@ -30,6 +30,10 @@ struct RsaaPass::Objects {
   gl::Texture subsample_depth, table;
   gl::Texture codes_ms, depth_ms;  // multisample pre-pass: sample i = subsample i
   gl::Framebuffer multisample_target;
+  // Union pre-pass (2m subsamples from two m-sample draws): the shifted draw's codes, sample i =
+  // subsample m + i of the pixel that contains the point it sees.
+  gl::Texture codes_ms2;
+  gl::Framebuffer multisample_target2;
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Buffer uniforms;  // RsaaUniformBlock
   gl::Program subsample_program, post_program;
@@ -46,11 +50,19 @@ struct RsaaUniformHead {
   float jitter_ndc[2];
   float threshold;
   std::int32_t subsample;
-  std::int32_t padding[2];
+  float sample_shift[2];
 };
 static_assert(sizeof(RsaaUniformHead) == 96, "std140 layout of RsaaUniforms");
+// What changes per pre-pass draw: jitter, threshold, subsample, sample shift.
+struct RsaaUniformPerDraw {
+  float jitter_ndc[2];
+  float threshold;
+  std::int32_t subsample;
+  float sample_shift[2];
+};
 constexpr GLintptr kJitterOffset = offsetof(RsaaUniformHead, jitter_ndc);
-static_assert(offsetof(RsaaUniformHead, subsample) == kJitterOffset + 12, "jitter and subsample are one update");
+static_assert(offsetof(RsaaUniformHead, sample_shift) - kJitterOffset == offsetof(RsaaUniformPerDraw, sample_shift),
+              "the per-draw fields are one update");
 
 // The pass's post-process texture units (rsaa_post.glsl with RSAA_POST_FIRST_UNIT 0).
 constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, kFirstCodeUnit = 4;
@@ -115,6 +127,36 @@ bool driver_samples_pattern(const SamplePattern& pattern) {
   const SamplePattern driver = query_gl_sample_pattern(n);
   for (int i = 0; i < n; ++i)
     if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
+  return true;
+}
+
+// Whether the driver can run the pre-pass as two m-sample draws for a 2m-subsample `pattern`:
+// subsamples 0..m-1 are the driver's m positions and m..2m-1 the same shifted by one sub-pixel
+// offset, wrapped into the pixel (the union pattern). Sets `shift` (pixel space, +y down) and
+// `raster` (per shifted sample i: the raster pixel whose sample i sees subsample m + i of pixel
+// P is P + raster[i], window space).
+bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector<glm::ivec2>& raster) {
+  GLint max_samples = 0, max_integer_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
+  const int n = pattern.size(), m = n / 2;
+  if (n % 2 != 0 || m < 2 || m > max_samples || m > max_integer_samples) return false;
+  const SamplePattern driver = query_gl_sample_pattern(m);
+  for (int i = 0; i < m; ++i)
+    if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
+  const auto wrap = [](double v) { return v - std::floor(v + 0.5); };  // into [-0.5, 0.5)
+  const Vec2 d0 = pattern.positions[m] - driver.positions[0];
+  shift = {wrap(d0.x), wrap(d0.y)};
+  if (!(length(shift) > 1e-6)) return false;
+  raster.clear();
+  for (int i = 0; i < m; ++i) {
+    const Vec2 seen = driver.positions[i] + shift;  // relative to the raster pixel's centre
+    const Vec2 u = pattern.positions[m + i];
+    if (std::abs(wrap(seen.x) - u.x) > 1e-6 || std::abs(wrap(seen.y) - u.y) > 1e-6) return false;
+    // The point seen is at R's centre + seen = P's centre + u: R - P = u - seen (pixel space).
+    const Vec2 step = {std::round(u.x - seen.x), std::round(u.y - seen.y)};
+    raster.push_back({int(step.x), int(-step.y)});  // R - P in window space (+y up)
+  }
   return true;
 }
 
@@ -205,13 +247,16 @@ SamplePattern query_gl_sample_pattern(int samples) {
   return pattern_from_gl_positions("gl" + std::to_string(samples) + "x", positions);
 }
 
-std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass) {
+std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
+                                bool union_pattern) {
   std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(sample_count) + "\n" +
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
                         "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n" +
                         "#define RSAA_PREPASS_FIRST_UNIT " + std::to_string(settings.prepass_first_unit) + "\n" +
                         "#define RSAA_UNIFORM_BINDING " + std::to_string(settings.uniform_binding) + "\n";
   if (multisample_prepass) defines += "#define RSAA_PREPASS_MSAA\n";
+  if (multisample_prepass && union_pattern)
+    defines += "#define RSAA_PREPASS_MSAA_UNION\n#define RSAA_MS_SAMPLES " + std::to_string(sample_count / 2) + "\n";
   if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
   else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
   else if (settings.similarity != "sadp")
@@ -246,13 +291,24 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   if (settings.prepass != "jittered" && settings.prepass != "msaa")
     throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
   multisample_ = settings.prepass == "msaa" && driver_samples_pattern(pattern_);
-  if (settings.prepass == "msaa" && !multisample_)
-    throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
-                                "-sample integer target at the positions of pattern '" + pattern_.name + "'");
+  std::vector<glm::ivec2> union_raster;
+  if (settings.prepass == "msaa" && !multisample_) {
+    multisample_ = union_ = driver_samples_union(pattern_, union_shift_, union_raster);
+    if (!multisample_)
+      throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
+                                  "-sample integer target at the positions of pattern '" + pattern_.name +
+                                  "', nor two " + std::to_string(n / 2) + "-sample draws whose union they are");
+  }
   if (multisample_) {
-    gl_->codes_ms = gl::make_texture_2d_multisample(single_code_format(settings.code_bits), width, height, n);
-    gl_->depth_ms = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, n);
+    const int m = union_ ? n / 2 : n;
+    const GLenum format = single_code_format(settings.code_bits);
+    gl_->codes_ms = gl::make_texture_2d_multisample(format, width, height, m);
+    gl_->depth_ms = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, m);
     gl_->multisample_target = gl::make_framebuffer({{gl_->codes_ms.get()}}, {gl_->depth_ms.get()});
+    if (union_) {
+      gl_->codes_ms2 = gl::make_texture_2d_multisample(format, width, height, m);
+      gl_->multisample_target2 = gl::make_framebuffer({{gl_->codes_ms2.get()}}, {gl_->depth_ms.get()});
+    }
   } else {
     gl_->subsample_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
     for (int k = 0; k < (n + 3) / 4; ++k) {
@@ -265,16 +321,17 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   // The uniform block: the frame's fields are written per call, the neighbours once.
   std::vector<std::int32_t> block(sizeof(RsaaUniformHead) / 4 + 4 * std::size_t(n), 0);
   for (int i = 0; i < n; ++i) {
+    std::int32_t* entry = &block[sizeof(RsaaUniformHead) / 4 + 4 * std::size_t(i)];
     const glm::ivec2 step = window_step(pattern_.positions[i]);
-    block[sizeof(RsaaUniformHead) / 4 + 4 * std::size_t(i)] = step.x;
-    block[sizeof(RsaaUniformHead) / 4 + 4 * std::size_t(i) + 1] = step.y;
+    entry[0] = step.x, entry[1] = step.y;
+    if (union_ && i >= n / 2) entry[2] = union_raster[i - n / 2].x, entry[3] = union_raster[i - n / 2].y;
   }
   GLuint buffer = 0;
   glCreateBuffers(1, &buffer);
   gl_->uniforms = gl::Buffer(buffer);
   glNamedBufferStorage(buffer, GLsizeiptr(block.size() * 4), block.data(), GL_DYNAMIC_STORAGE_BIT);
 
-  const std::string defines = rsaa_shader_defines(settings, n, multisample_);
+  const std::string defines = rsaa_shader_defines(settings, n, multisample_, union_);
   gl_->subsample_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                              {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
                                              {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
@@ -291,10 +348,11 @@ RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;
 
 std::string RsaaPass::prepass_glsl() const {
   return "// RSAA pre-pass for pattern " + pattern_.name + " (generated by RsaaPass::prepass_glsl)\n" +
-         rsaa_shader_defines(settings_, pattern_.size(), multisample_) + rsaa_shader_file("rsaa_prepass.glsl");
+         rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_) + rsaa_shader_file("rsaa_prepass.glsl");
 }
 
 std::vector<GlName> RsaaPass::code_textures() const {
+  if (union_) return {gl_->codes_ms.get(), gl_->codes_ms2.get()};
   if (multisample_) return {gl_->codes_ms.get()};
   std::vector<GlName> names;
   for (const gl::Texture& t : gl_->codes) names.push_back(t.get());
@@ -321,15 +379,28 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
   glBindTextures(GLuint(first), 3, textures);
   const GLuint zero[4] = {0, 0, 0, 0};
   const GLfloat far_depth = 1.0f;
-  if (multisample_) {  // one draw, the fragment shader run once per covered sample
-    const GLuint fb = gl_->multisample_target.get();
-    glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
-    glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
-    glBindFramebuffer(GL_FRAMEBUFFER, fb);
-    glViewport(0, 0, frame.width, frame.height);
-    glEnable(GL_SAMPLE_SHADING);
-    glMinSampleShading(1.0f);
-    draw(-1, {0.0f, 0.0f});
+  const auto write_per_draw = [&](glm::vec2 jitter, int subsample, Vec2 sample_shift) {
+    const RsaaUniformPerDraw per_draw = {
+        {jitter.x, jitter.y}, settings_.threshold, subsample, {float(sample_shift.x), float(sample_shift.y)}};
+    glNamedBufferSubData(gl_->uniforms.get(), kJitterOffset, sizeof per_draw, &per_draw);
+  };
+  if (multisample_) {  // one draw (two for a union), the fragment shader run once per covered sample
+    for (int d = 0; d < (union_ ? 2 : 1); ++d) {
+      const GLuint fb = (d == 0 ? gl_->multisample_target : gl_->multisample_target2).get();
+      glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
+      glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+      glBindFramebuffer(GL_FRAMEBUFFER, fb);
+      glViewport(0, 0, frame.width, frame.height);
+      gl::set_pass_state(true);
+      glEnable(GL_SAMPLE_SHADING);
+      glMinSampleShading(1.0f);
+      // The shifted draw: the image moves by -shift, so that raster sample i sees the point at
+      // its position + shift.
+      const Vec2 shift = d == 0 ? Vec2{0.0, 0.0} : union_shift_;
+      const glm::vec2 jitter = d == 0 ? glm::vec2(0.0f) : jitter_ndc_for_sample(shift.x, shift.y, frame.width, frame.height);
+      write_per_draw(jitter, d == 0 ? 0 : pattern_.size() / 2, pixel_to_gl(shift));
+      draw(-1, jitter);
+    }
     gl::check("RSAA pre-pass (multisample)");
     return;
   }
@@ -342,12 +413,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     glViewport(0, 0, frame.width, frame.height);
     const Vec2 s = pattern_.positions[i];
     const glm::vec2 jitter = jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height);
-    const struct {
-      float jitter_ndc[2];
-      float threshold;
-      std::int32_t subsample;
-    } per_draw = {{jitter.x, jitter.y}, settings_.threshold, i};
-    glNamedBufferSubData(gl_->uniforms.get(), kJitterOffset, sizeof per_draw, &per_draw);
+    write_per_draw(jitter, i, {0.0, 0.0});
     gl::set_pass_state(true);  // again: the previous callback may have changed it
     glColorMaski(0, i % 4 == 0, i % 4 == 1, i % 4 == 2, i % 4 == 3);
     draw(i, jitter);
@@ -418,6 +484,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   glBindTextureUnit(kDepthUnit, frame.centre_depth);
   glBindTextureUnit(kTableUnit, gl_->table.get());
   if (multisample_) glBindTextureUnit(kFirstCodeUnit, gl_->codes_ms.get());
+  if (union_) glBindTextureUnit(kFirstCodeUnit + 1, gl_->codes_ms2.get());
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);

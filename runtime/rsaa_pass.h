@@ -27,8 +27,8 @@
 //                   o_code = rsaa_prepass_code(view_position, view_face_normal, primitive);
 // (shaders/rsaa_prepass.glsl documents them; rsaa_face_normal(view_position) gives the face
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
-// frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample).
-// Before each call the pass binds its framebuffer, the viewport, the pre-pass state below, the
+// frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample;
+// twice for a union pattern). Before each call the pass binds its framebuffer, the viewport, the pre-pass state below, the
 // uniform block at settings.uniform_binding and three textures at units settings.prepass_first_unit
 // to +2; the callback may use any other unit and binding. After each call the pass checks that
 // the current program declares the block and that its units and binding are untouched, and
@@ -89,11 +89,14 @@ struct RsaaSettings {
   int code_bits = 8;              // 8 | 16 | 32: storage per subsample similarity
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver); "msaa"
-  // (experimental) draws once into a multisample target with per-sample shading, which needs the
-  // driver's sample positions for that count to be the table's (gl4x on Mesa llvmpipe; d3d8x on
-  // GPUs whose 8x is the standard pattern); refused where the driver cannot. On llvmpipe its masks
-  // differ from the jittered ones on detailed models (2CylinderEngine, RSAA 4x: 35.1 dB against
-  // 39.0), a cause not found yet, so it is not the default.
+  // draws once into a multisample target with per-sample shading, which needs the driver's
+  // sample positions for that count to be the table's (gl4x on Mesa llvmpipe; d3d8x on GPUs whose
+  // 8x is the standard pattern), or, for a table of 2m subsamples that are the driver's m
+  // positions and the same shifted by one sub-pixel offset (a union pattern, such as
+  // tables/custom-gl4x-union.json), twice into m-sample targets, the second draw shifted;
+  // refused where the driver can do neither. Its masks equal the jittered pre-pass's
+  // (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's outermost
+  // pixels); on llvmpipe it is slower (per-sample shading), so it is not the default.
   std::string prepass = "jittered";
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
   // Where the shaders find the pass's resources: the pre-pass's three textures at units
@@ -104,8 +107,10 @@ struct RsaaSettings {
 };
 
 // The #define lines that configure shaders/rsaa_prepass.glsl and rsaa_post.glsl for `settings`,
-// `sample_count` subsamples and the jittered or the multisample pre-pass. Needs no GL.
-std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass);
+// `sample_count` subsamples and the jittered or the multisample pre-pass (for a union pattern:
+// two draws of half the samples, see RsaaSettings::prepass). Needs no GL.
+std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
+                                bool union_pattern = false);
 // A file of shaders/ ("rsaa_prepass.glsl", "rsaa_post.glsl", "rsaa_post.hlsl", ...) with its
 // #include lines replaced by the included text: one self-contained text. Needs no GL.
 std::string rsaa_shader_file(const std::string& name);
@@ -182,6 +187,8 @@ class RsaaPass {
   RsaaSettings settings_;
   SamplePattern pattern_;
   bool multisample_ = false;
+  bool union_ = false;   // the multisample pre-pass as two draws of half the samples (union pattern)
+  Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   int width_, height_;
   std::unique_ptr<Objects> gl_;
 };

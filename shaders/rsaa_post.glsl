@@ -9,6 +9,9 @@
 // Defines expected before inclusion (RsaaPass::post_glsl() writes them for a pass):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (1 = post-pass authentication), RSAA_CODE_BITS, the similarity
 //   RSAA_PREPASS_MSAA        (optional) codes are the samples of one multisample texture
+//   RSAA_PREPASS_MSAA_UNION  (optional, with RSAA_MS_SAMPLES m) codes of a union pattern: samples
+//                            0..m-1 in the first multisample texture, the shifted draw's in a
+//                            second one, read at the raster pixel rsaa_neighbours[i].zw away
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
@@ -40,6 +43,9 @@ layout(binding = RSAA_POST_FIRST_UNIT + 3) uniform sampler2D rsaa_table;
 #endif
 #ifdef RSAA_PREPASS_MSAA
 layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2DMS rsaa_codes_ms;
+#ifdef RSAA_PREPASS_MSAA_UNION
+layout(binding = RSAA_POST_FIRST_UNIT + 5) uniform usampler2DMS rsaa_codes_ms2;
+#endif
 #else
 layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2D rsaa_codes[RSAA_CODE_TEXTURES];
 #endif
@@ -78,7 +84,17 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
 #endif
   bool any_different = false, any_uncovered = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-#ifdef RSAA_PREPASS_MSAA
+#if defined(RSAA_PREPASS_MSAA_UNION)
+    if (i < RSAA_MS_SAMPLES) {
+      codes[i] = texelFetch(rsaa_codes_ms, pixel, i).x;
+    } else {
+      // The raster pixel whose shifted sample saw subsample i; outside the image (one column and
+      // one row at the edge, by the shift's direction) the shifted draw has no code: similar.
+      ivec2 r = pixel + rsaa_neighbours[i].zw;
+      bool inside = all(greaterThanEqual(r, ivec2(0))) && all(lessThan(r, ivec2(rsaa_viewport)));
+      codes[i] = inside ? texelFetch(rsaa_codes_ms2, r, i - RSAA_MS_SAMPLES).x : 1u;
+    }
+#elif defined(RSAA_PREPASS_MSAA)
     codes[i] = texelFetch(rsaa_codes_ms, pixel, i).x;
 #else
     codes[i] = code_texels[i / 4][i % 4];

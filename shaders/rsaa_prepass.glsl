@@ -7,10 +7,13 @@
 //                   o_code = rsaa_prepass_code(view_position, view_face_normal, primitive);
 //
 // rsaa_jitter() shifts the image so that the subsample being drawn lands on the pixel centre (the
-// jittered pre-pass, one draw per subsample); it leaves the position alone in the multisample
-// pre-pass (RSAA_PREPASS_MSAA: one draw, the fragment shader run per sample). There,
-// view_position must be evaluated at the sample: pass interpolateAtSample(input, gl_SampleID)
-// (or declare the output and the input `sample`).
+// jittered pre-pass, one draw per subsample); in the multisample pre-pass (RSAA_PREPASS_MSAA: one
+// draw, or two for a union pattern, the fragment shader run per sample) it applies the second
+// union draw's shift. There rsaa_prepass_code() ignores view_position and rebuilds the sample's
+// point from its window position and depth (gl_FragCoord.z), as the centre's is: Mesa llvmpipe's
+// perspective-correct interpolation at a sample (interpolateAtSample/AtOffset, per-sample inputs)
+// slides the point along the view ray (relative depth error up to 0.17 on a detailed model),
+// which made points of one surface look dissimilar.
 //
 // Defines expected before inclusion (RsaaPass::prepass_glsl() writes them for a pass):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (0, 1, 2), RSAA_CODE_BITS, the similarity (rsaa_common.glsl)
@@ -33,11 +36,7 @@
 #include "rsaa_uniforms.glsl"
 
 vec4 rsaa_jitter(vec4 clip_position) {
-#ifdef RSAA_PREPASS_MSAA
-  return clip_position;
-#else
   return vec4(clip_position.xy + rsaa_jitter_ndc * clip_position.w, clip_position.zw);
-#endif
 }
 
 #if RSAA_INCLUDE_FS
@@ -65,7 +64,19 @@ vec3 rsaa_centre_position(ivec2 pixel) {
 // equal, the subsample is on the centre's triangle and the test is skipped; 0 never skips it.
 // All four channels carry the code: the pass masks the ones of other subsamples.
 uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive) {
+#ifdef RSAA_PREPASS_MSAA
+  // The point this sample sees (window space) and the pixel that contains it: the sample's own
+  // pixel, but for the shifted second draw of a union pattern.
+  vec2 window = floor(gl_FragCoord.xy) + gl_SamplePosition + rsaa_sample_shift;
+  ivec2 pixel = ivec2(floor(window));
+  if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, ivec2(rsaa_viewport))))
+    return uvec4(1u);  // a point outside the image: no pixel reads it
+  view_position = rsaa_view_position(window, gl_FragCoord.z, rsaa_inverse_projection, rsaa_viewport);
+  int subsample = rsaa_subsample + gl_SampleID;
+#else
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+  int subsample = rsaa_subsample;
+#endif
   uint centre_primitive = texelFetch(rsaa_centre_primitive, pixel, 0).x;
   if (primitive != 0u && centre_primitive == primitive) return uvec4(1u);  // decodes to 0
   uvec2 centre_normal = texelFetch(rsaa_centre_normal, pixel, 0).xy;
@@ -76,11 +87,7 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
 #if RSAA_AUTH == 2
   // Pre-pass authentication (paper section 2.4): a subsample that looks different from the
   // centre but even more different from its nearest outside pixel joins the similar cluster.
-#ifdef RSAA_PREPASS_MSAA
-  ivec2 outside = pixel + rsaa_neighbours[gl_SampleID].xy;
-#else
-  ivec2 outside = pixel + rsaa_neighbours[rsaa_subsample].xy;
-#endif
+  ivec2 outside = pixel + rsaa_neighbours[subsample].xy;
   if (similarity > 0.5 * rsaa_threshold && all(greaterThanEqual(outside, ivec2(0))) &&
       all(lessThan(outside, ivec2(rsaa_viewport)))) {
     uvec2 outside_normal = texelFetch(rsaa_centre_normal, outside, 0).xy;

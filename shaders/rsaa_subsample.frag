@@ -1,6 +1,7 @@
 // The runtime's own RSAA pre-pass fragment shader (after scene.vert and scene.geom, which gives
 // the exact face normal): the engine-facing functions of rsaa_prepass.glsl, called as an engine
-// would. Jittered: drawn once per subsample; RSAA_PREPASS_MSAA: once, run per sample.
+// would. Jittered: drawn once per subsample; RSAA_PREPASS_MSAA: once (twice for a union
+// pattern), run per sample.
 #include "rsaa_prepass.glsl"
 
 in FragmentData {
@@ -17,10 +18,5 @@ uniform uint u_primitive_base;  // first primitive id of this draw in the centre
 layout(location = 0) out uvec4 o_code;
 
 void main() {
-#ifdef RSAA_PREPASS_MSAA
-  vec3 position = interpolateAtSample(f_in.view_position, gl_SampleID);
-#else
-  vec3 position = f_in.view_position;
-#endif
-  o_code = rsaa_prepass_code(position, f_in.face_normal, u_primitive_base + uint(gl_PrimitiveID) + 1u);
+  o_code = rsaa_prepass_code(f_in.view_position, f_in.face_normal, u_primitive_base + uint(gl_PrimitiveID) + 1u);
 }

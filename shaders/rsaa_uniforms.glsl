@@ -16,8 +16,15 @@ layout(std140, binding = RSAA_UNIFORM_BINDING) uniform RsaaUniforms {
   vec2 rsaa_viewport;            // the frame's width and height in pixels
   vec2 rsaa_jitter_ndc;          // jittered pre-pass: the image translation of this draw (NDC)
   float rsaa_threshold;          // similarity above which a subsample is dissimilar
-  int rsaa_subsample;            // jittered pre-pass: the subsample drawn; -1 otherwise
-  // .xy: the step from a pixel to the outside pixel nearest subsample i, window space (+y up)
+  // Jittered pre-pass: the subsample drawn; multisample pre-pass: the subsample of this draw's
+  // sample 0 (m for the second draw of a union pattern); -1 in the post-process.
+  int rsaa_subsample;
+  // Multisample pre-pass: the offset from a sample's raster position to the point it sees, window
+  // space (the second draw of a union pattern is shifted); 0 otherwise.
+  vec2 rsaa_sample_shift;
+  // .xy: the step from a pixel to the outside pixel nearest subsample i, window space (+y up);
+  // .zw, union pattern, shifted subsamples: the raster pixel whose sample saw subsample i of a
+  // pixel, relative to that pixel (window space).
   ivec4 rsaa_neighbours[RSAA_SAMPLE_COUNT];
 };
 

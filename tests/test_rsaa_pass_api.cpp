@@ -100,12 +100,7 @@ in vec3 v_view_position;
 uniform uint u_primitive_base;
 layout(location = 0) out uvec4 o_code;
 void main() {
-#ifdef RSAA_PREPASS_MSAA
-  vec3 position = interpolateAtSample(v_view_position, gl_SampleID);  // at the sample shaded
-#else
-  vec3 position = v_view_position;
-#endif
-  o_code = rsaa_prepass_code(position, rsaa_face_normal(v_view_position),
+  o_code = rsaa_prepass_code(v_view_position, rsaa_face_normal(v_view_position),
                              u_primitive_base + uint(gl_PrimitiveID) + 1u);
 })";
   return gl::make_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "", "engine pre-pass");

@@ -105,7 +105,7 @@ TEST_P(CheckedInTables, CompileAndAgreeWithTheirJson) {
   expect_hlsl_compiles(hlsl);
 }
 
-INSTANTIATE_TEST_SUITE_P(Tables, CheckedInTables, ::testing::Values("d3d4x", "d3d8x", "d3d16x"));
+INSTANTIATE_TEST_SUITE_P(Tables, CheckedInTables, ::testing::Values("d3d4x", "d3d8x", "d3d16x", "custom-gl4x-union"));
 
 }  // namespace
 }  // namespace rsaa

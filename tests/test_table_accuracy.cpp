@@ -39,7 +39,7 @@ TEST_P(CheckedInTableAccuracy, ClearlyBeatsBothBaselinesOnFreshCases) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Tables, CheckedInTableAccuracy,
-                         ::testing::Values("d3d4x", "d3d8x", "d3d16x"));
+                         ::testing::Values("d3d4x", "d3d8x", "d3d16x", "custom-gl4x-union"));
 
 }  // namespace
 }  // namespace rsaa

@@ -115,8 +115,14 @@ const char* to_string(FitRule rule) { return rule == FitRule::Ockham ? "ockham" 
 
 std::string train_command(const TrainOptions& o) {
   std::ostringstream s;
-  s << "rsaa train --pattern " << o.pattern.name << " --cases " << o.cases << " --seed " << o.seed
-    << " --fit " << to_string(o.fit);
+  s << "rsaa train --pattern " << o.pattern.name;
+  if (o.pattern.name.rfind("custom-", 0) == 0) {  // a custom pattern is only reproducible with its positions
+    s << " --positions \"";
+    for (std::size_t i = 0; i < o.pattern.positions.size(); ++i)
+      s << (i ? " " : "") << o.pattern.positions[i].x << "," << o.pattern.positions[i].y;
+    s << "\"";
+  }
+  s << " --cases " << o.cases << " --seed " << o.seed << " --fit " << to_string(o.fit);
   if (o.fit == FitRule::Mixed) s << " --two-line-weight " << o.two_line_weight;
   return s.str();
 }

@@ -68,6 +68,10 @@ std::vector<TechniqueOptions> default_techniques() {
   list.push_back(technique_options("agaa", 8));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
   for (const TechniqueOptions& o : rsaa_defaults()) list.push_back(o);
+  // RSAA 4x with the one-draw multisample pre-pass, beside the jittered one (same masks).
+  TechniqueOptions multisample = technique_options("rsaa", 4);
+  multisample.prepass = "msaa";
+  list.push_back(multisample);
   return list;
 }
 

@@ -18,7 +18,7 @@ namespace rsaa::cli {
 namespace {
 
 struct BenchArgs {
-  std::string scenes, techniques, table;
+  std::string scenes, techniques, table, table_prepass = "jittered";
   int width = 640, height = 480;
   int frames = 5, orbit_frames = 4;
   bool quick = false;
@@ -116,10 +116,16 @@ int run_bench_command(BenchArgs a) {
     o.techniques = chosen;
   }
   if (!a.table.empty()) {  // RSAA with the user's table, beside the built-in ones
-    TechniqueOptions t = technique_options("rsaa");
-    t.table = a.table;
-    validate(t);
-    o.techniques.push_back(t);
+    if (a.table_prepass != "jittered" && a.table_prepass != "msaa" && a.table_prepass != "both")
+      throw std::invalid_argument("--table-prepass must be jittered, msaa or both, not '" + a.table_prepass + "'");
+    for (const char* prepass : {"jittered", "msaa"}) {
+      if (a.table_prepass != "both" && a.table_prepass != prepass) continue;
+      TechniqueOptions t = technique_options("rsaa");
+      t.table = a.table;
+      t.prepass = prepass;
+      validate(t);
+      o.techniques.push_back(t);
+    }
   }
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
   if (!a.lights.empty()) {
@@ -179,6 +185,10 @@ Action add_bench_command(CLI::App& app) {
                   "Comma-separated labels to keep (e.g. 'msaa 4x,dyncov'; noaa is always run)");
   cmd->add_option("--table", args->table,
                   "Also bench RSAA (default options) with this offset table file (JSON), e.g. a scene-specific one");
+  cmd->add_option("--table-prepass", args->table_prepass,
+                  "Pre-pass of the --table row: jittered, msaa (one multisample draw, or two for a union "
+                  "pattern such as tables/custom-gl4x-union.json) or both (two rows)")
+      ->capture_default_str();
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();
   cmd->add_option("--height", args->height, "Image height")->capture_default_str();
   cmd->add_option("--frames", args->frames, "Timed frames per technique (median)")->capture_default_str()

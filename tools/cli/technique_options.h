@@ -31,7 +31,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "instead of the built-in table; the pre-pass samples the table's positions");
   cmd->add_option("--prepass", o.prepass,
                   "rsaa pre-pass: jittered (one draw per subsample) | msaa (experimental: one multisample "
-                  "draw with per-sample shading, where the driver samples the table's positions)")
+                  "draw with per-sample shading, where the driver samples the table's positions; two "
+                  "draws, the second shifted, for a union pattern such as tables/custom-gl4x-union.json)")
       ->capture_default_str();
   cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
