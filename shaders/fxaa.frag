@@ -7,17 +7,18 @@
 // a branch, and a loop's body at least once): the luma comes from the main pass (an R16F target,
 // fxaa_luma.glsl), read four texels a gather, as FXAA 3.11 reads luma from alpha with gathers;
 // the 3x3 neighbourhood is four gathers, the first step along the edge is in it, and the walk
-// reads two steps a gather, one side an iteration. The colour is read twice, by texelFetch: the
-// pixel and its neighbour across the edge, blended as the bilinear fetch between them would.
+// reads two steps a gather, one side an iteration (a loop costs every pixel at least one pass).
+// The colour is read twice, by texelFetch: the pixel and its neighbour across the edge, blended
+// as the bilinear fetch between them would.
 uniform sampler2D u_colour;  // linear RGBA16F, clamp to edge
 uniform sampler2D u_luma;    // fxaa_luma of u_colour, R16F, clamp to edge
 uniform vec2 u_viewport;
-uniform int u_search_gathers;  // gathers of the walk along an edge (two steps each), both sides
 layout(location = 0) out vec4 o_colour;
 
 const float kEdgeThreshold = 0.125;     // local contrast relative to the brightest neighbour
 const float kEdgeThresholdMin = 0.0312; // ignore contrast below this (dark areas)
 const float kSubpixel = 0.75;           // strength of the sub-pixel softening
+const float kReach = 17.0;              // pixels walked each way at most
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -50,35 +51,35 @@ void main() {
   float gradient = 0.25 * max(g1, g2);
   float edge_luma = 0.5 * (m + (first_side ? l1 : l2));
   ivec2 across = (is_horizontal ? ivec2(0, 1) : ivec2(1, 0)) * (first_side ? -1 : 1);
-  vec2 along = is_horizontal ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
   // Walk both ways along the edge until the mean luma of the pixel pair straddling it (what a
   // bilinear fetch half way between them returns) no longer matches the edge. The first step
   // each way is in the neighbourhood.
   float pair1 = is_horizontal ? w + (first_side ? sw : nw) : s + (first_side ? sw : se);
   float pair2 = is_horizontal ? e + (first_side ? se : ne) : n + (first_side ? nw : ne);
-  float d1 = 0.5 * pair1 - edge_luma, d2 = 0.5 * pair2 - edge_luma;
-  float dist1 = 1.0, dist2 = 1.0;
-  bool done1 = keep || abs(d1) >= gradient, done2 = keep || abs(d2) >= gradient;
+  // (side 1, side 2): the luma difference at the end found, the distance walked, whether done.
+  vec2 d = 0.5 * vec2(pair1, pair2) - edge_luma;
+  vec2 dist = vec2(1.0);
+  bvec2 done = bvec2(keep || abs(d.x) >= gradient, keep || abs(d.y) >= gradient);
   // Then a gather at the corner between the next two steps, on the edge line, holds both
-  // steps' pairs; each iteration walks the side that has come less far.
-  vec2 edge_corner = vec2(pixel) + vec2(max(across, ivec2(0)));
-  for (int i = 0; i < u_search_gathers; ++i) {
-    if (done1 && done2) break;
-    bool side1 = !done1 && (done2 || dist1 <= dist2);
-    float k = side1 ? dist1 : dist2;  // the gather holds the steps k + 1 and k + 2
-    vec4 g = textureGather(u_luma, (edge_corner + along * (side1 ? -(k + 1.0) : k + 2.0)) * texel, 0);
+  // steps' pairs; each iteration walks the side that has come less far, up to kReach pixels
+  // (no counter: the loop ends when every pixel of the vector is done).
+  vec2 edge_corner = (vec2(pixel) + vec2(max(across, ivec2(0)))) * texel;
+  vec2 along = (is_horizontal ? vec2(1.0, 0.0) : vec2(0.0, 1.0)) * texel;
+  while (!all(done)) {
+    bool side1 = !done.x && (done.y || dist.x <= dist.y);
+    float k = side1 ? dist.x : dist.y;  // the gather holds the steps k + 1 and k + 2
+    vec4 g = textureGather(u_luma, edge_corner + along * (side1 ? -(k + 1.0) : k + 2.0), 0);
     // The two pairs' sums, at the lower and the upper coordinate along the edge.
-    vec2 pairs = is_horizontal ? vec2(g.x + g.w, g.y + g.z) : vec2(g.z + g.w, g.x + g.y);
-    vec2 d = 0.5 * (side1 ? pairs.yx : pairs.xy) - edge_luma;  // nearer step, farther step
-    bool hit = abs(d.x) >= gradient;
-    float found = hit ? d.x : d.y, dist = hit ? k + 1.0 : k + 2.0;
-    bool done = hit || abs(d.y) >= gradient;
-    if (side1) {
-      d1 = found; dist1 = dist; done1 = done;
-    } else {
-      d2 = found; dist2 = dist; done2 = done;
-    }
+    vec2 pairs = is_horizontal ? g.xy + g.wz : g.zx + g.wy;
+    vec2 step_d = 0.5 * (side1 ? pairs.yx : pairs) - edge_luma;  // nearer step, farther step
+    bool hit = abs(step_d.x) >= gradient;
+    bool ended = hit || abs(step_d.y) >= gradient || k + 2.0 >= kReach;
+    bvec2 which = bvec2(side1, !side1);
+    d = mix(d, vec2(hit ? step_d.x : step_d.y), which);
+    dist = mix(dist, vec2(k + (hit ? 1.0 : 2.0)), which);
+    done = bvec2(done.x || (side1 && ended), done.y || (!side1 && ended));
   }
+  float d1 = d.x, d2 = d.y, dist1 = dist.x, dist2 = dist.y;
   bool nearer_is_1 = dist1 < dist2;
   float nearer = min(dist1, dist2);
   float length_edge = dist1 + dist2;

@@ -10,11 +10,6 @@
 namespace rsaa {
 namespace {
 
-// Gathers of the walk along an edge, two steps each, shared by both sides: each side reaches 17
-// pixels when neither end is found (the first version: 16, at 10 filtered fetches a side), and a
-// side whose end is found early leaves its gathers to the other.
-constexpr int kSearchGathers = 16;
-
 class Fxaa : public Technique {
  public:
   Fxaa(int width, int height)
@@ -43,7 +38,6 @@ class Fxaa : public Technique {
     glBindFramebuffer(GL_FRAMEBUFFER, output_target_.get({{output}}));
     glProgramUniform1i(program, glGetUniformLocation(program, "u_colour"), 0);
     glProgramUniform1i(program, glGetUniformLocation(program, "u_luma"), 1);
-    glProgramUniform1i(program, glGetUniformLocation(program, "u_search_gathers"), kSearchGathers);
     glProgramUniform2f(program, glGetUniformLocation(program, "u_viewport"), float(view.width),
                        float(view.height));
     glBindTextureUnit(0, colour_.get());
