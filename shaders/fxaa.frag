@@ -2,38 +2,40 @@
 // here from its description): the baseline a user would otherwise pick. One colour sample per
 // pixel, no geometry: find a local luma edge, walk along it to both ends, and move the fetch
 // across the edge by how far the pixel is from the nearer end; also soften sub-pixel aliasing.
-uniform sampler2D u_colour;  // linear RGBA16F, GL_LINEAR, clamp to edge
+//
+// Cost (llvmpipe, where every pixel of an 8-wide vector runs every instruction of both sides of
+// a branch, and a loop's body at least once): the luma comes from the main pass (an R16F target,
+// fxaa_luma.glsl), read four texels a gather, as FXAA 3.11 reads luma from alpha with gathers;
+// the 3x3 neighbourhood is four gathers, the first step along the edge is in it, and the walk
+// reads two steps a gather, one side an iteration (a loop costs every pixel at least one pass).
+// The colour is read twice, by texelFetch: the pixel and its neighbour across the edge, blended
+// as the bilinear fetch between them would.
+uniform sampler2D u_colour;  // linear RGBA16F, clamp to edge
+uniform sampler2D u_luma;    // fxaa_luma of u_colour, R16F, clamp to edge
 uniform vec2 u_viewport;
 layout(location = 0) out vec4 o_colour;
 
 const float kEdgeThreshold = 0.125;     // local contrast relative to the brightest neighbour
 const float kEdgeThresholdMin = 0.0312; // ignore contrast below this (dark areas)
 const float kSubpixel = 0.75;           // strength of the sub-pixel softening
-const int kSearchSteps = 10;
-
-// Luma of display values: edges are judged as seen.
-float luma(vec3 linear_rgb) { return sqrt(dot(max(linear_rgb, vec3(0.0)), vec3(0.299, 0.587, 0.114))); }
-float luma_at(vec2 p) { return luma(texture(u_colour, p / u_viewport).rgb); }
-// The 3x3 neighbourhood at texel centres: unfiltered fetches, cheaper than filtered ones.
-float luma_of(ivec2 pixel) {
-  return luma(texelFetch(u_colour, clamp(pixel, ivec2(0), ivec2(u_viewport) - 1), 0).rgb);
-}
+const float kReach = 17.0;              // pixels walked each way at most
 
 void main() {
-  vec2 pos = gl_FragCoord.xy;
-  ivec2 pixel = ivec2(pos);
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec2 texel = 1.0 / u_viewport;
+  vec2 corner = vec2(pixel) * texel;  // the pixel's lower left corner
   vec4 centre = texelFetch(u_colour, pixel, 0);
-  float m = luma(centre.rgb);
-  float n = luma_of(pixel + ivec2(0, 1)), s = luma_of(pixel - ivec2(0, 1));
-  float e = luma_of(pixel + ivec2(1, 0)), w = luma_of(pixel - ivec2(1, 0));
+  // A gather at a corner returns its four texels as (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+  vec4 lower_left = textureGather(u_luma, corner, 0);                          // w, m, s, sw
+  vec4 upper_right = textureGather(u_luma, corner + texel, 0);                 // n, ne, e, m
+  float nw = textureGather(u_luma, corner + vec2(0.0, texel.y), 0).x;          // nw, n, m, w
+  float se = textureGather(u_luma, corner + vec2(texel.x, 0.0), 0).z;          // m, e, se, s
+  float m = lower_left.y, w = lower_left.x, s = lower_left.z, sw = lower_left.w;
+  float n = upper_right.x, ne = upper_right.y, e = upper_right.z;
   float hi = max(max(max(n, s), max(e, w)), m), lo = min(min(min(n, s), min(e, w)), m);
   float contrast = hi - lo;
-  if (contrast < max(kEdgeThresholdMin, hi * kEdgeThreshold) || any(isnan(centre)) || any(isinf(centre))) {
-    o_colour = centre;
-    return;
-  }
-  float ne = luma_of(pixel + ivec2(1, 1)), nw = luma_of(pixel + ivec2(-1, 1));
-  float se = luma_of(pixel + ivec2(1, -1)), sw = luma_of(pixel + ivec2(-1, -1));
+  // Low local contrast: the pixel is kept (offset 0 below; on llvmpipe a branch saves nothing).
+  bool keep = contrast < max(kEdgeThresholdMin, hi * kEdgeThreshold);
   // Sub-pixel aliasing: how far the centre stands out from its neighbourhood average.
   float average = (2.0 * (n + s + e + w) + ne + nw + se + sw) / 12.0;
   float subpixel = clamp(abs(average - m) / contrast, 0.0, 1.0);
@@ -45,32 +47,49 @@ void main() {
   bool is_horizontal = horizontal >= vertical;  // the edge runs along x
   float l1 = is_horizontal ? s : w, l2 = is_horizontal ? n : e;
   float g1 = abs(l1 - m), g2 = abs(l2 - m);
-  bool first_side = g1 >= g2;
+  bool first_side = g1 >= g2;  // the edge is towards l1
   float gradient = 0.25 * max(g1, g2);
-  vec2 across = is_horizontal ? vec2(0, 1) : vec2(1, 0);
-  vec2 along = is_horizontal ? vec2(1, 0) : vec2(0, 1);
-  float step_across = first_side ? -1.0 : 1.0;
   float edge_luma = 0.5 * (m + (first_side ? l1 : l2));
-  vec2 on_edge = pos + across * (0.5 * step_across);
-  // Walk both ways along the edge until the luma pair there no longer matches the edge.
-  vec2 p1 = on_edge - along, p2 = on_edge + along;
-  float d1 = luma_at(p1) - edge_luma, d2 = luma_at(p2) - edge_luma;
-  bool done1 = abs(d1) >= gradient, done2 = abs(d2) >= gradient;
-  for (int i = 1; i < kSearchSteps && !(done1 && done2); ++i) {
-    float stride = i < 4 ? 1.0 : 2.0;
-    if (!done1) { p1 -= along * stride; d1 = luma_at(p1) - edge_luma; done1 = abs(d1) >= gradient; }
-    if (!done2) { p2 += along * stride; d2 = luma_at(p2) - edge_luma; done2 = abs(d2) >= gradient; }
+  ivec2 across = (is_horizontal ? ivec2(0, 1) : ivec2(1, 0)) * (first_side ? -1 : 1);
+  // Walk both ways along the edge until the mean luma of the pixel pair straddling it (what a
+  // bilinear fetch half way between them returns) no longer matches the edge. The first step
+  // each way is in the neighbourhood.
+  float pair1 = is_horizontal ? w + (first_side ? sw : nw) : s + (first_side ? sw : se);
+  float pair2 = is_horizontal ? e + (first_side ? se : ne) : n + (first_side ? nw : ne);
+  // (side 1, side 2): the luma difference at the end found, the distance walked, whether done.
+  vec2 d = 0.5 * vec2(pair1, pair2) - edge_luma;
+  vec2 dist = vec2(1.0);
+  bvec2 done = bvec2(keep || abs(d.x) >= gradient, keep || abs(d.y) >= gradient);
+  // Then a gather at the corner between the next two steps, on the edge line, holds both
+  // steps' pairs; each iteration walks the side that has come less far, up to kReach pixels
+  // (no counter: the loop ends when every pixel of the vector is done).
+  vec2 edge_corner = (vec2(pixel) + vec2(max(across, ivec2(0)))) * texel;
+  vec2 along = (is_horizontal ? vec2(1.0, 0.0) : vec2(0.0, 1.0)) * texel;
+  while (!all(done)) {
+    bool side1 = !done.x && (done.y || dist.x <= dist.y);
+    float k = side1 ? dist.x : dist.y;  // the gather holds the steps k + 1 and k + 2
+    vec4 g = textureGather(u_luma, edge_corner + along * (side1 ? -(k + 1.0) : k + 2.0), 0);
+    // The two pairs' sums, at the lower and the upper coordinate along the edge.
+    vec2 pairs = is_horizontal ? g.xy + g.wz : g.zx + g.wy;
+    vec2 step_d = 0.5 * (side1 ? pairs.yx : pairs) - edge_luma;  // nearer step, farther step
+    bool hit = abs(step_d.x) >= gradient;
+    bool ended = hit || abs(step_d.y) >= gradient || k + 2.0 >= kReach;
+    bvec2 which = bvec2(side1, !side1);
+    d = mix(d, vec2(hit ? step_d.x : step_d.y), which);
+    dist = mix(dist, vec2(k + (hit ? 1.0 : 2.0)), which);
+    done = bvec2(done.x || (side1 && ended), done.y || (!side1 && ended));
   }
-  float dist1 = is_horizontal ? pos.x - p1.x : pos.y - p1.y;
-  float dist2 = is_horizontal ? p2.x - pos.x : p2.y - pos.y;
+  float d1 = d.x, d2 = d.y, dist1 = dist.x, dist2 = dist.y;
   bool nearer_is_1 = dist1 < dist2;
   float nearer = min(dist1, dist2);
   float length_edge = dist1 + dist2;
   // Only blend when the centre is on the side the nearer end bends towards.
   bool centre_below = m - edge_luma < 0.0;
   bool correct = ((nearer_is_1 ? d1 : d2) < 0.0) != centre_below;
-  float edge_offset = correct ? 0.5 - nearer / max(length_edge, 1e-6) : 0.0;
-  float offset = max(edge_offset, subpixel);
-  vec4 fetched = texture(u_colour, (pos + across * (offset * step_across)) / u_viewport);
-  o_colour = any(isnan(fetched)) || any(isinf(fetched)) ? centre : fetched;
+  float edge_offset = correct ? 0.5 - nearer / length_edge : 0.0;
+  float offset = keep ? 0.0 : max(edge_offset, subpixel);
+  vec4 beyond = texelFetch(u_colour, clamp(pixel + across, ivec2(0), ivec2(u_viewport) - 1), 0);
+  vec4 blended = mix(centre, beyond, offset);
+  // A NaN or infinite neighbour never spreads: the pixel keeps its own colour.
+  o_colour = any(isnan(blended)) || any(isinf(blended)) ? centre : blended;
 }

@@ -1,12 +1,19 @@
 // Shading at one sample position (scene_shading.glsl). With RSAA_GBUFFER also writes the
-// compressed geometric normal and the primitive id (+1; 0 = background) for the RSAA pre-pass.
+// compressed geometric normal and the primitive id (+1; 0 = background) for the RSAA pre-pass;
+// with FXAA_LUMA the luma the FXAA-style post-process reads (fxaa_luma.glsl).
 #include "rsaa_common.glsl"
 #include "scene_shading.glsl"
+#ifdef FXAA_LUMA
+#include "fxaa_luma.glsl"
+#endif
 
 layout(location = 0) out vec4 o_colour;
 #ifdef RSAA_GBUFFER
 layout(location = 1) out uvec2 o_normal;
 layout(location = 2) out uint o_primitive;
+#endif
+#ifdef FXAA_LUMA
+layout(location = 1) out float o_luma;
 #endif
 
 void main() {
@@ -14,5 +21,8 @@ void main() {
 #ifdef RSAA_GBUFFER
   o_normal = rsaa_encode_normal(f_in.face_normal);
   o_primitive = scene_primitive_order() + 1u;
+#endif
+#ifdef FXAA_LUMA
+  o_luma = fxaa_luma(o_colour.rgb);
 #endif
 }

@@ -1,5 +1,10 @@
-// fxaa: the 1x frame, then the FXAA-style post-process (shaders/fxaa.frag): the single-sample
-// post-process baseline beside RSAA.
+// fxaa: the 1x frame with its luma beside it (FXAA 3.11 wants luma from the pass before it),
+// then the FXAA-style post-process (shaders/fxaa.frag): the single-sample post-process baseline
+// beside RSAA.
+#include <algorithm>
+#include <cmath>
+
+#include "runtime/shader_library.h"
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
@@ -8,24 +13,35 @@ namespace {
 class Fxaa : public Technique {
  public:
   Fxaa(int width, int height)
-      : colour_(gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR)),
+      : colour_(gl::make_texture_2d(GL_RGBA16F, width, height)),
+        luma_(gl::make_texture_2d(GL_R16F, width, height)),
         depth_(gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height)),
-        frame_(gl::make_framebuffer({{colour_.get()}}, {depth_.get()})),
+        frame_(gl::make_framebuffer({{colour_.get()}, {luma_.get()}}, {depth_.get()})),
+        shade_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
+                                 {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
+                                 {GL_FRAGMENT_SHADER, gl::shader_source("scene_shade.frag")}},
+                                "#define FXAA_LUMA\n", "scene shading + FXAA luma")),
         post_(make_fullscreen_program("fxaa.frag", "")) {}
 
   void render(const GpuScene& scene, const View& view, GLuint output) override {
     timer_.begin("main");
     clear_to_background(frame_.get(), scene);
+    const glm::vec3 bg = scene.background();  // fxaa_luma of the background
+    const GLfloat bg_luma = std::sqrt(0.299f * std::max(0.0f, bg.r) + 0.587f * std::max(0.0f, bg.g) +
+                                      0.114f * std::max(0.0f, bg.b));
+    glClearNamedFramebufferfv(frame_.get(), GL_COLOR, 1, &bg_luma);
     glBindFramebuffer(GL_FRAMEBUFFER, frame_.get());
-    SceneRenderer::draw(scene, view, {0.0f, 0.0f}, renderer_.shade_program());
+    SceneRenderer::draw(scene, view, {0.0f, 0.0f}, shade_.get());
     timer_.end();
     timer_.begin("post-process");
     const GLuint program = post_.get();
     glBindFramebuffer(GL_FRAMEBUFFER, output_target_.get({{output}}));
     glProgramUniform1i(program, glGetUniformLocation(program, "u_colour"), 0);
+    glProgramUniform1i(program, glGetUniformLocation(program, "u_luma"), 1);
     glProgramUniform2f(program, glGetUniformLocation(program, "u_viewport"), float(view.width),
                        float(view.height));
     glBindTextureUnit(0, colour_.get());
+    glBindTextureUnit(1, luma_.get());
     glUseProgram(program);
     draw_fullscreen_triangle();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -33,13 +49,12 @@ class Fxaa : public Technique {
     gl::check("FXAA");
   }
 
-  double bytes_per_pixel() const override { return 8 + 4 + 8; }  // colour, depth, output
+  double bytes_per_pixel() const override { return 8 + 2 + 4 + 8; }  // colour, luma, depth, output
 
  private:
-  SceneRenderer renderer_;
-  gl::Texture colour_, depth_;
+  gl::Texture colour_, luma_, depth_;
   gl::Framebuffer frame_;
-  gl::Program post_;
+  gl::Program shade_, post_;
   gl::CachedFramebuffer output_target_;
 };
 
