@@ -3,10 +3,15 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 
 #include <gtest/gtest.h>
 
 #include "runtime/gl_context.h"
+#include "runtime/rsaa_pass.h"
+#include "runtime/scene.h"
+#include "runtime/scene_renderer.h"
 
 namespace rsaa::test {
 
@@ -20,6 +25,30 @@ class GlTest : public ::testing::Test {
     static std::unique_ptr<gl::HeadlessContext> c;
     return c;
   }
+};
+
+// A scene at its own camera drawn into the 1x targets RSAA reads (needs a current context).
+struct SceneFrame {
+  SceneFrame(const std::string& scene_name, int width, int height)
+      : scene(load_scene(scene_name)),
+        gpu(scene),
+        view(make_view(choose_camera(scene, std::nullopt), width, height)),
+        targets(width, height) {
+    renderer.draw_gbuffer(gpu, view, targets);
+  }
+  RsaaFrame frame() const { return targets.frame(view.inverse_projection()); }
+  // The pass's pre-pass with its own program, drawing this scene.
+  void render_subsamples(RsaaPass& pass) const {
+    pass.render_subsamples(frame(), [&](unsigned program, glm::vec2 jitter) {
+      SceneRenderer::draw(gpu, view, jitter, program);
+    });
+  }
+
+  Scene scene;
+  GpuScene gpu;
+  View view;
+  SceneRenderer renderer;
+  RsaaTargets targets;
 };
 
 }  // namespace rsaa::test

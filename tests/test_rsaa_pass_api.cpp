@@ -75,11 +75,6 @@ TEST_F(RsaaPassApi, ACallbackDrawingWithAnotherProgramIsAnError) {
   }
 }
 
-void run_pre_pass(RsaaPass& pass, const RsaaFrame& frame, const GpuScene& gpu, const View& view) {
-  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
-    SceneRenderer::draw(gpu, view, jitter, program);
-  });
-}
 
 // An engine's pre-pass program: its own vertex stage (the scene's attribute 0 and camera, no
 // geometry stage) with rsaa_jitter(), and a fragment stage calling rsaa_prepass_code() with the
@@ -112,26 +107,21 @@ struct MaskRun {
   std::uint32_t all_similar;
 };
 MaskRun masks_both_ways(const std::string& scene_name, RsaaSettings settings, int width, int height) {
-  const Scene scene = load_scene(scene_name);
-  const GpuScene gpu(scene);
-  const View view = make_view(choose_camera(scene, std::nullopt), width, height);
-  SceneRenderer renderer;
-  const RsaaTargets targets(width, height);
-  renderer.draw_gbuffer(gpu, view, targets);
+  const test::SceneFrame scene(scene_name, width, height);
   settings.output_mask = true;
   RsaaPass pass(settings, width, height);
-  const RsaaFrame frame = targets.frame(view.inverse_projection());
+  const RsaaFrame frame = scene.frame();
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
   const gl::Texture masks = gl::make_texture_2d(GL_R32UI, width, height);
   MaskRun run;
   run.all_similar = (1u << pass.pattern().size()) - 1u;
-  run_pre_pass(pass, frame, gpu, view);
+  scene.render_subsamples(pass);
   pass.resolve(frame, output.get(), masks.get());
   run.own_program = read_back_uints(masks.get(), width, height);
   const gl::Program engine = engine_prepass_program(pass);
   pass.render_subsamples_with_own_shaders(frame, [&] {
     glUseProgram(engine.get());
-    SceneRenderer::draw(gpu, view, glm::vec2(0.0f), engine.get());
+    SceneRenderer::draw(scene.gpu, scene.view, glm::vec2(0.0f), engine.get());
   });
   pass.resolve(frame, output.get(), masks.get());
   run.engine_program = read_back_uints(masks.get(), width, height);
@@ -196,12 +186,8 @@ TEST_F(RsaaPassApi, ResourceSlotsOutsideTheDriversLimitsAreRefused) {
 }
 
 TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
-  const Scene scene = load_scene("builtin:default");
-  const GpuScene gpu(scene);
-  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
-  SceneRenderer renderer;
-  const RsaaTargets targets(kWidth, kHeight);
-  renderer.draw_gbuffer(gpu, view, targets);
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  const SceneRenderer& renderer = scene.renderer;
 
   // An engine's state, all of it different from what the pass draws with.
   const gl::Texture engine_texture = gl::make_texture_2d(GL_RGBA8, 4, 4);
@@ -228,8 +214,8 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glMinSampleShading(0.25f);
 
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
-  const RsaaFrame frame = targets.frame(view.inverse_projection());
-  run_pre_pass(pass, frame, gpu, view);
+  const RsaaFrame frame = scene.frame();
+  scene.render_subsamples(pass);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   pass.resolve(frame, output.get());
 
@@ -273,7 +259,7 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glDepthMask(GL_TRUE);
   glDisable(GL_SAMPLE_SHADING);
   const gl::Texture clean_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
-  run_pre_pass(pass, frame, gpu, view);
+  scene.render_subsamples(pass);
   pass.resolve(frame, clean_output.get());
   const Image a = read_back_image(output.get(), kWidth, kHeight);
   const Image b = read_back_image(clean_output.get(), kWidth, kHeight);

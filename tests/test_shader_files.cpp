@@ -136,6 +136,24 @@ TEST(HlslPostProcess, CompilesForEveryTableAndOption) {
   EXPECT_NE(log.find("another sample count"), std::string::npos) << log;
 }
 
+// `actual` equals `expected` (within 1e-3, `actual` upside down when `flipped`), and `expected`
+// resampled many pixels of the 1x colour `noaa` (so that the comparison says something).
+void expect_same_resampled_image(GLuint expected_texture, GLuint actual_texture, GLuint noaa_texture, int width,
+                                 int height, bool flipped) {
+  const Image expected = read_back_image(expected_texture, width, height);
+  const Image actual = read_back_image(actual_texture, width, height);
+  const Image noaa = read_back_image(noaa_texture, width, height);
+  int resampled = 0, differing = 0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const Rgb a = expected.at(x, y), b = actual.at(x, flipped ? height - 1 - y : y), c = noaa.at(x, y);
+      resampled += a.r != c.r || a.g != c.g || a.b != c.b;
+      differing += std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}) > 1e-3f;
+    }
+  EXPECT_GT(resampled, 300);
+  EXPECT_EQ(differing, 0) << "of " << resampled << " resampled pixels";
+}
+
 // A copy of a texture upside down (rows from the top, as Direct3D stores an image).
 gl::Texture upside_down(GLuint texture, GLenum format, int width, int height, GLenum filter = GL_NEAREST) {
   gl::Texture copy = gl::make_texture_2d(format, width, height, filter);
@@ -158,15 +176,11 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   constexpr int kWidth = 160, kHeight = 120;
   RsaaSettings settings;
   settings.auth = GetParam();
-  const Scene scene = load_scene("builtin:default");
-  const GpuScene gpu(scene);
-  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
-  SceneRenderer renderer;
-  const RsaaTargets targets(kWidth, kHeight);
-  renderer.draw_gbuffer(gpu, view, targets);
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  const View& view = scene.view;
   RsaaPass pass(settings, kWidth, kHeight);
-  const RsaaFrame frame = targets.frame(view.inverse_projection());
-  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) { SceneRenderer::draw(gpu, view, jitter, program); });
+  const RsaaFrame frame = scene.frame();
+  scene.render_subsamples(pass);
   const gl::Texture glsl_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   pass.resolve(frame, glsl_output.get());
 
@@ -244,19 +258,7 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   draw_fullscreen_triangle();
   gl::check("the HLSL post-process");
 
-  const Image glsl = read_back_image(glsl_output.get(), kWidth, kHeight);
-  const Image hlsl = read_back_image(hlsl_output.get(), kWidth, kHeight);
-  const Image noaa = read_back_image(frame.colour, kWidth, kHeight);
-  int resampled = 0, differing = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      const Rgb a = glsl.at(x, y), b = hlsl.at(x, kHeight - 1 - y), c = noaa.at(x, y);
-      resampled += a.r != c.r || a.g != c.g || a.b != c.b;
-      const float d = std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
-      differing += d > 1e-3f;
-    }
-  EXPECT_GT(resampled, 300);
-  EXPECT_EQ(differing, 0) << "of " << resampled << " resampled pixels";
+  expect_same_resampled_image(glsl_output.get(), hlsl_output.get(), frame.colour, kWidth, kHeight, true);
 }
 
 INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1));
@@ -301,15 +303,11 @@ TEST_F(GeneratedShadersOnGl, ThePostFragmentWithItsTableInlinedGivesThePassImage
   constexpr int kWidth = 160, kHeight = 120;
   RsaaSettings settings;
   settings.auth = 1;
-  const Scene scene = load_scene("builtin:default");
-  const GpuScene gpu(scene);
-  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
-  SceneRenderer renderer;
-  const RsaaTargets targets(kWidth, kHeight);
-  renderer.draw_gbuffer(gpu, view, targets);
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  const View& view = scene.view;
   RsaaPass pass(settings, kWidth, kHeight);
-  const RsaaFrame frame = targets.frame(view.inverse_projection());
-  pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) { SceneRenderer::draw(gpu, view, jitter, program); });
+  const RsaaFrame frame = scene.frame();
+  scene.render_subsamples(pass);
   const gl::Texture pass_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   pass.resolve(frame, pass_output.get());
 
@@ -352,18 +350,7 @@ TEST_F(GeneratedShadersOnGl, ThePostFragmentWithItsTableInlinedGivesThePassImage
   draw_fullscreen_triangle();
   gl::check("the generated post-process");
 
-  const Image expected = read_back_image(pass_output.get(), kWidth, kHeight);
-  const Image generated = read_back_image(output.get(), kWidth, kHeight);
-  const Image noaa = read_back_image(frame.colour, kWidth, kHeight);
-  int resampled = 0, differing = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      const Rgb a = expected.at(x, y), b = generated.at(x, y), c = noaa.at(x, y);
-      resampled += a.r != c.r || a.g != c.g || a.b != c.b;
-      differing += std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)}) > 1e-3f;
-    }
-  EXPECT_GT(resampled, 300);
-  EXPECT_EQ(differing, 0) << "of " << resampled << " resampled pixels";
+  expect_same_resampled_image(pass_output.get(), output.get(), frame.colour, kWidth, kHeight, false);
 }
 
 }  // namespace

@@ -28,16 +28,6 @@ void text(cv::Mat& canvas, const std::string& s, cv::Point at, double scale = 0.
   cv::putText(canvas, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1, cv::LINE_AA);
 }
 
-// Written through OpenImageIO as the other plots: the canvas holds sRGB values.
-void save(const cv::Mat& canvas, const std::string& path) {
-  Image image(canvas.cols, canvas.rows);
-  for (int y = 0; y < canvas.rows; ++y)
-    for (int x = 0; x < canvas.cols; ++x) {
-      const cv::Vec3b p = canvas.at<cv::Vec3b>(y, x);
-      image.at(x, y) = {srgb_to_linear(p[2] / 255.0f), srgb_to_linear(p[1] / 255.0f), srgb_to_linear(p[0] / 255.0f)};
-    }
-  write_image(path, image);
-}
 
 std::string number(double v) {
   char s[32];
@@ -75,6 +65,16 @@ struct Range {
 };
 
 }  // namespace
+
+void write_canvas(const cv::Mat& canvas, const std::string& path) {
+  Image image(canvas.cols, canvas.rows);
+  for (int y = 0; y < canvas.rows; ++y)
+    for (int x = 0; x < canvas.cols; ++x) {
+      const cv::Vec3b p = canvas.at<cv::Vec3b>(y, x);
+      image.at(x, y) = {srgb_to_linear(p[2] / 255.0f), srgb_to_linear(p[1] / 255.0f), srgb_to_linear(p[0] / 255.0f)};
+    }
+  write_image(path, image);
+}
 
 void FigureTable::add(std::vector<double> row, const std::string& label) {
   if (row.size() != columns.size()) throw std::invalid_argument("FigureTable: a row needs one cell per column");
@@ -154,7 +154,7 @@ void plot_lines(const FigureTable& t, const ChartStyle& style, const std::string
     else cv::line(canvas, {width - right + 12, y - 4}, {width - right + 40, y - 4}, colour, 2, cv::LINE_AA);
     text(canvas, t.columns[c], {width - right + 46, y}, 0.4, colour);
   }
-  save(canvas, path);
+  write_canvas(canvas, path);
 }
 
 void plot_bars(const FigureTable& t, const ChartStyle& style, const std::string& path) {
@@ -202,7 +202,7 @@ void plot_bars(const FigureTable& t, const ChartStyle& style, const std::string&
       cv::rectangle(canvas, {width - right + 12, y - 10}, {width - right + 26, y + 2}, line_colour(c - 1), -1);
       text(canvas, t.columns[c], {width - right + 32, y}, 0.42, line_colour(c - 1));
     }
-  save(canvas, path);
+  write_canvas(canvas, path);
 }
 
 }  // namespace rsaa::bench

@@ -5,7 +5,15 @@
 #include <string>
 #include <vector>
 
+namespace cv {
+class Mat;
+}
+
 namespace rsaa::bench {
+
+// Writes an 8-bit BGR canvas holding sRGB values as an image file (OpenImageIO, by extension):
+// every plot of the bench and the figures goes out through here.
+void write_canvas(const cv::Mat& canvas, const std::string& path);
 
 struct FigureTable {
   std::vector<std::string> columns;        // the first is the x axis (or the bar categories)

@@ -36,16 +36,6 @@ namespace {
 
 constexpr int kMinSurfaces = 2, kMaxSurfaces = 8;
 
-double psnr(const DisplayImage& a, const DisplayImage& reference) {
-  const double db = compare_images(a, reference).psnr_db;
-  return std::isfinite(db) ? std::min(db, 99.0) : 99.0;
-}
-
-std::string fixed(double v, int decimals = 2) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.*f", decimals, v);
-  return s;
-}
 
 // The CPU reference's image of `pixels` with `settings`, as the GL resolve draws it.
 DisplayImage replay_dcaa(const std::vector<std::vector<CoverageFragment>>& pixels, const DcaaSettings& settings,
@@ -98,10 +88,10 @@ Figure dcaa_figure(const FigureOptions& o, const FigureProgress& progress) {
     const std::string name = scene_short_name(spec);
     const auto frame = load_scene_frame(spec, o, progress);
     if (progress) progress("dcaa " + name + ": GL fragment lists");
-    const double msaa = psnr(frame->render(technique_options("msaa", 4)).image, frame->reference);
+    const double msaa = capped_psnr(frame->render(technique_options("msaa", 4)).image, frame->reference);
     auto dcaa = make_technique(technique_options("dcaa"), o.width, o.height);
     const DisplayImage gl_image = frame->render(*dcaa).image;
-    const double gl_psnr = psnr(gl_image, frame->reference);
+    const double gl_psnr = capped_psnr(gl_image, frame->reference);
     const CoverageFragmentLists& lists = *coverage_lists_of(*dcaa);
     const auto pixels = lists.read_back();
     const SamplePattern& pattern = lists.lut().pattern();
@@ -115,7 +105,7 @@ Figure dcaa_figure(const FigureOptions& o, const FigureProgress& progress) {
         DcaaSettings settings = dcaa_settings(rules);
         settings.max_surfaces = m;
         const DisplayImage image = replay_dcaa(pixels, settings, pattern, {bg.r, bg.g, bg.b}, o.width, o.height);
-        quality_columns.back().push_back(psnr(image, frame->reference));
+        quality_columns.back().push_back(capped_psnr(image, frame->reference));
         if (m == 4 && std::string(rules) == "surface") gl_differs = differing_pixels(gl_image, image, pixels);
       }
     }
@@ -201,12 +191,12 @@ Figure agaa_figure(const FigureOptions& o, const FigureProgress& progress) {
         TechniqueOptions t = technique_options("agaa", samples);
         t.agaa_aggregates = c;
         if (progress) progress("agaa " + name + ": " + technique_label(t));
-        columns.back().push_back(psnr(frame->render(t).image, frame->reference));
+        columns.back().push_back(capped_psnr(frame->render(t).image, frame->reference));
       }
     }
     if (progress) progress("agaa " + name + ": msaa 4x");
     part.table.columns.push_back(name + ", msaa 4x");
-    columns.emplace_back(4, psnr(frame->render(technique_options("msaa", 4)).image, frame->reference));
+    columns.emplace_back(4, capped_psnr(frame->render(technique_options("msaa", 4)).image, frame->reference));
   }
   for (int c = 1; c <= 4; ++c) {
     std::vector<double> row = {double(c)};

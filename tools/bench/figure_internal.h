@@ -30,6 +30,11 @@ struct SceneFrame {
   DisplayImage reference;  // 64x SSAA
 };
 
+// PSNR of `a` against `reference`, 99 dB for identical images (finite, for tables and plots).
+double capped_psnr(const DisplayImage& a, const DisplayImage& reference);
+// `v` with `decimals` decimals.
+std::string fixed(double v, int decimals = 2);
+
 // Loads `spec` and renders its reference. Needs a current GL context.
 std::unique_ptr<SceneFrame> load_scene_frame(const std::string& spec, const FigureOptions& options, const FigureProgress& progress);
 

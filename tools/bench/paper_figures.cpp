@@ -56,16 +56,6 @@ std::vector<double> figure1_thresholds() {
 
 namespace {
 
-double capped_psnr(const DisplayImage& a, const DisplayImage& reference) {
-  const double db = compare_images(a, reference).psnr_db;
-  return std::isfinite(db) ? std::min(db, 99.0) : 99.0;
-}
-
-std::string fixed(double v, int decimals = 2) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.*f", decimals, v);
-  return s;
-}
 
 Figure figure9(const FigureOptions& o, const FigureProgress& progress) {
   const std::string spec = o.scenes.front();
@@ -294,6 +284,17 @@ void write_figure(const Figure& f, const std::string& dir) {
     else plot_lines(drawn, p.style, dir + "/" + p.stem + ".png");
   }
   write_file_atomically(dir + "/" + f.name + ".md", f.markdown);
+}
+
+double capped_psnr(const DisplayImage& a, const DisplayImage& reference) {
+  const double db = compare_images(a, reference).psnr_db;
+  return std::isfinite(db) ? std::min(db, 99.0) : 99.0;
+}
+
+std::string fixed(double v, int decimals) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.*f", decimals, v);
+  return s;
 }
 
 }  // namespace rsaa::bench

@@ -8,6 +8,7 @@
 #include "core/util/colour.h"
 #include "image/image_io.h"
 #include "tools/bench/bench.h"
+#include "tools/bench/chart.h"
 #include "tools/bench/growth.h"
 
 namespace rsaa::bench {
@@ -37,15 +38,6 @@ std::string short_label(const std::string& label, const TechniqueOptions& o) {
 }
 std::string short_label(const TechniqueResult& r) { return short_label(r.label, r.options); }
 
-void save(const cv::Mat& canvas, const std::string& path) {
-  Image image(canvas.cols, canvas.rows);
-  for (int y = 0; y < canvas.rows; ++y)
-    for (int x = 0; x < canvas.cols; ++x) {
-      const cv::Vec3b p = canvas.at<cv::Vec3b>(y, x);
-      image.at(x, y) = {srgb_to_linear(p[2] / 255.0f), srgb_to_linear(p[1] / 255.0f), srgb_to_linear(p[0] / 255.0f)};
-    }
-  write_image(path, image);
-}
 
 void text(cv::Mat& canvas, const std::string& s, cv::Point at, double scale = 0.45,
           cv::Scalar colour = kInk) {
@@ -114,7 +106,7 @@ void plot_pareto(const std::vector<TechniqueResult>& results, const std::string&
     legend_y += 17;
   }
   text(canvas, "* = on the Pareto front", {width - right + 10, legend_y + 10}, 0.4);
-  save(canvas, path);
+  write_canvas(canvas, path);
 }
 
 void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::string& path) {
@@ -188,7 +180,7 @@ void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::strin
     text(canvas, line, {width - right + 170, legend_y}, 0.4, colour);
     legend_y += 17;
   }
-  save(canvas, path);
+  write_canvas(canvas, path);
 }
 
 void plot_pass_times(const std::vector<TechniqueResult>& results, const std::string& scene, const std::string& path) {
@@ -228,7 +220,7 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
     text(canvas, name, {x + 20, height - 28}, 0.45);
     x += 150;
   }
-  save(canvas, path);
+  write_canvas(canvas, path);
 }
 
 }  // namespace rsaa::bench
@@ -293,7 +285,7 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
     }
     text(canvas, y_columns[k], {width - right - 200, top + 20 + 18 * int(k)}, 0.45, c);
   }
-  save(canvas, png_path);
+  write_canvas(canvas, png_path);
 }
 
 }  // namespace rsaa::bench
@@ -350,7 +342,7 @@ void plot_crops(const std::vector<std::pair<std::string, DisplayImage>>& images,
         canvas.at<cv::Vec3b>(y0 + caption + y, x0 + x) = {p[2], p[1], p[0]};
       }
   }
-  save(canvas, path);
+  write_canvas(canvas, path);
 }
 
 }  // namespace rsaa::bench
