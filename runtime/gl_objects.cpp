@@ -140,6 +140,11 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
   glGetIntegerv(GL_VIEWPORT, viewport_);
   glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+  // A program deleted while current lives only until another is made current: the pass's draws
+  // end it, so there is nothing to restore (glUseProgram would fail with GL_INVALID_VALUE).
+  GLint deleted = GL_FALSE;
+  if (program_) glGetProgramiv(GLuint(program_), GL_DELETE_STATUS, &deleted);
+  if (deleted) program_ = 0;
   depth_test_ = glIsEnabled(GL_DEPTH_TEST);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);

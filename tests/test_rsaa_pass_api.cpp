@@ -174,6 +174,27 @@ TEST_F(RsaaPassApi, AnEngineProgramWithoutTheBlockOrThatRebindsAUnitIsAnError) {
   gl::check("after the refused draws");
 }
 
+// An engine may delete its current program (it stays alive until another is made current): the
+// pass's draws end it, and its calls leave no GL error trying to restore it.
+TEST_F(RsaaPassApi, AProgramDeletedWhileCurrentIsNotRestored) {
+  const test::SceneFrame scene("builtin:edges", kWidth, kHeight);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  {
+    const gl::Program doomed = engine_prepass_program(pass);
+    glUseProgram(doomed.get());
+  }  // deleted while current
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  scene.render_subsamples(pass);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "after the pre-pass";
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(scene.frame(), output.get());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "after the post-process";
+  GLint current = -1;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  EXPECT_EQ(current, 0);
+}
+
 TEST_F(RsaaPassApi, ResourceSlotsOutsideTheDriversLimitsAreRefused) {
   RsaaSettings settings;
   settings.prepass_first_unit = 1000;

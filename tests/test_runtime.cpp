@@ -204,10 +204,15 @@ TEST_F(Runtime, TablesAtRunTime) {
   RsaaSettings settings;
   settings.table = std::make_shared<const OffsetTable>(zero);
   const Image unchanged = resolve_with(settings);
+  // ... and so does the noaa technique's image, bit for bit.
+  const Image noaa = render("builtin:default", technique_options("noaa"));
   for (std::size_t p = 0; p < one_x.pixels.size(); ++p) {
     ASSERT_EQ(unchanged.pixels[p].r, one_x.pixels[p].r) << p;
     ASSERT_EQ(unchanged.pixels[p].g, one_x.pixels[p].g) << p;
     ASSERT_EQ(unchanged.pixels[p].b, one_x.pixels[p].b) << p;
+    ASSERT_EQ(noaa.pixels[p].r, one_x.pixels[p].r) << p;
+    ASSERT_EQ(noaa.pixels[p].g, one_x.pixels[p].g) << p;
+    ASSERT_EQ(noaa.pixels[p].b, one_x.pixels[p].b) << p;
   }
   // A custom pattern: the d3d4x positions turned by 90 degrees, with the fallback rule's offsets.
   std::vector<Vec2> turned;

@@ -1,4 +1,4 @@
-// noaa: one shaded sample at each pixel centre.
+// noaa: one shaded sample at each pixel centre (the 1x frame RSAA and FXAA start from).
 #include "runtime/techniques/techniques.h"
 
 namespace rsaa {
@@ -13,7 +13,9 @@ class NoAA : public Technique {
     timer_.begin("main");
     clear_to_background(fb, scene);
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
-    SceneRenderer::draw(scene, view, {0.0f, 0.0f}, renderer_.shade_program());
+    // RSAA's G-buffer program (its normal and primitive outputs are dropped: nothing attached):
+    // a post-process that changes nothing gives this image bit for bit.
+    SceneRenderer::draw(scene, view, {0.0f, 0.0f}, renderer_.gbuffer_program());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     timer_.end();
   }
