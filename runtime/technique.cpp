@@ -38,6 +38,15 @@ std::vector<TechniqueOptions> rsaa_defaults() {
   return {technique_options("rsaa", 4), technique_options("rsaa", 8)};
 }
 
+std::vector<TechniqueOptions> rsaa_extensions() {
+  TechniqueOptions capped = technique_options("rsaa", 8), multi = capped, both = capped;
+  capped.split_cap = kRsaaSplitCap;
+  multi.multi_surface = "neighbours";
+  both.split_cap = kRsaaSplitCap;
+  both.multi_surface = "neighbours";
+  return {capped, multi, both};
+}
+
 const std::vector<std::string>& technique_names() {
   static const std::vector<std::string> names = {"noaa", "fxaa", "msaa", "ssaa", "ssaa-filtered", "rsaa", "dcaa", "dyncov", "agaa"};
   return names;
@@ -90,6 +99,10 @@ void validate(const TechniqueOptions& o) {
       bad("rsaa --table brings its own sample pattern: leave out --pattern");
     if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32)
       bad("rsaa --code-bits must be 8, 16 or 32");
+    if (!(o.split_cap == 0.0 || (o.split_cap >= 1.0 && std::isfinite(o.split_cap))))
+      bad("rsaa --split-cap must be 0 (the paper's split) or a finite number >= 1");
+    if (o.multi_surface != "fetch" && o.multi_surface != "neighbours")
+      bad("rsaa --multi-surface must be fetch or neighbours, not '" + o.multi_surface + "'");
     if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)
       bad("rsaa --threshold must be a finite number >= 0");
   } else {
@@ -97,6 +110,18 @@ void validate(const TechniqueOptions& o) {
     for (const auto& n : technique_names()) known += (known.empty() ? "" : ", ") + n;
     bad("unknown technique '" + o.technique + "' (known: " + known + ")");
   }
+}
+
+// " cap2.5", " ms": the options beyond the paper, when not the paper's.
+static std::string rsaa_extension_label(const TechniqueOptions& o) {
+  std::string label;
+  if (o.split_cap > 0.0) {
+    std::ostringstream cap;
+    cap << " cap" << o.split_cap;
+    label += cap.str();
+  }
+  if (o.multi_surface != "fetch") label += " ms";
+  return label;
 }
 
 std::string technique_label(const TechniqueOptions& o) {
@@ -122,12 +147,13 @@ std::string technique_label(const TechniqueOptions& o) {
     std::string stem = o.table.substr(slash == std::string::npos ? 0 : slash + 1);
     if (stem.size() > 5 && stem.compare(stem.size() - 5, 5, ".json") == 0) stem.resize(stem.size() - 5);
     return "rsaa table " + stem + " " + o.similarity + " auth" + std::to_string(o.auth) +
-           (o.prepass == "jittered" ? "" : " " + o.prepass);
+           (o.prepass == "jittered" ? "" : " " + o.prepass) + rsaa_extension_label(o);
   }
   const int n = samples_or(o, 8);
   std::string label = "rsaa " + std::to_string(n) + "x ";
   if (n == 4) label += (o.pattern.empty() ? std::string("gl4x") : o.pattern) + " ";
-  return label + o.similarity + " auth" + std::to_string(o.auth) + (o.prepass == "jittered" ? "" : " " + o.prepass);
+  return label + o.similarity + " auth" + std::to_string(o.auth) + (o.prepass == "jittered" ? "" : " " + o.prepass) +
+         rsaa_extension_label(o);
 }
 
 std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, int height) {
@@ -172,6 +198,8 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;
   s.code_bits = o.code_bits;
   s.prepass = o.prepass;
+  s.split_cap = float(o.split_cap);
+  s.multi_surface = o.multi_surface;
   return s;
 }
 

@@ -21,6 +21,8 @@ struct TechniqueOptions {
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
   std::string table;                 // rsaa: an offset table file (JSON); empty: the built-in one
   std::string prepass = "jittered";  // rsaa: jittered | msaa (RsaaSettings::prepass)
+  double split_cap = 0.0;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
+  std::string multi_surface = "fetch";  // rsaa: fetch (the paper) | neighbours (RsaaSettings::multi_surface)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
                                      // paper's 0.1); 0: relative, agaa_k_pixels footprints
@@ -37,6 +39,11 @@ TechniqueOptions technique_options(const std::string& technique, int samples = 0
 
 // The paper's 12 RSAA variants: samples 4 | 8 x similarity sadp | depth x auth 0 | 1 | 2.
 std::vector<TechniqueOptions> rsaa_variants();
+// The split cap the bench measures (RsaaSettings::split_cap).
+constexpr double kRsaaSplitCap = 3.0;
+// RSAA 8x default options with the extensions beyond the paper: --split-cap kRsaaSplitCap,
+// --multi-surface neighbours, and both.
+std::vector<TechniqueOptions> rsaa_extensions();
 // RSAA 4x and 8x with this project's default options (sadp-plane, auth 0).
 std::vector<TechniqueOptions> rsaa_defaults();
 

@@ -9,6 +9,9 @@
 // Defines expected before inclusion (RsaaPass::post_glsl() writes them for a pass):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (1 = post-pass authentication), RSAA_CODE_BITS, the similarity
 //   RSAA_PREPASS_MSAA        (optional) codes are the samples of one multisample texture
+//   RSAA_SPLIT_CAP           (optional) cap of the k-means split, x threshold (rsaa_common.glsl)
+//   RSAA_MULTI_SURFACE_NEIGHBOURS  (optional) pixels whose dissimilar subsamples point at two
+//                            different surfaces: a sample average from the neighbours (below)
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
@@ -70,6 +73,65 @@ vec3 rsaa_post_position(ivec2 pixel) {
                             rsaa_inverse_projection, rsaa_viewport);
 }
 
+#ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
+// Does the centre of pixel `other` show another surface than the centre of `pixel` (normal
+// `normal`, view position `position`)? Background and surface differ; two surfaces compare with
+// the pass's similarity against the threshold.
+bool rsaa_centre_differs(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other) {
+  if (other == pixel) return false;
+  uvec2 other_normal = texelFetch(rsaa_post_centre_normal, other, 0).xy;
+  bool a = rsaa_is_surface(normal), b = rsaa_is_surface(other_normal);
+  if (a != b) return true;
+  if (!a) return false;
+  return rsaa_similarity(position, rsaa_decode_normal(normal), rsaa_post_position(other),
+                         rsaa_decode_normal(other_normal)) > rsaa_threshold;
+}
+
+// Multi-surface resolve (ours, RsaaSettings::multi_surface = "neighbours"). One bilinear fetch
+// blends the centre with neighbours of one quadrant, which suits two surfaces. When the outside
+// pixels nearest the dissimilar subsamples (rsaa_neighbours) show two surfaces that differ from
+// the centre's and from each other, the pixel holds 3+ surfaces: it is resolved as the mean over
+// its subsamples instead, a similar subsample taking the centre's colour and a dissimilar one
+// the colour of its outside pixel (the centre's when that pixel shows the centre's surface).
+// Returns false (the caller fetches as usual) for every other pixel.
+bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, out vec4 resolved) {
+  resolved = colour;
+  ivec2 last = ivec2(rsaa_viewport) - 1;
+  vec3 position = rsaa_post_position(pixel);
+  ivec2 first = ivec2(-1);
+  uvec2 first_normal = uvec2(0u);
+  vec3 first_position = vec3(0.0);
+  bool three = false;
+  uint takes_outside = 0u;  // bit i: dissimilar subsample i takes its outside pixel's colour
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    if ((mask & (1u << i)) != 0u) continue;
+    ivec2 q = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
+    if (!rsaa_centre_differs(pixel, centre_normal, position, q)) continue;
+    takes_outside |= 1u << i;
+    if (first.x < 0) {
+      first = q;
+      first_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
+      first_position = rsaa_post_position(q);
+    } else if (!three) {
+      three = rsaa_centre_differs(first, first_normal, first_position, q);
+    }
+  }
+  if (!three) return false;
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    vec3 c = colour.rgb;
+    if ((takes_outside & (1u << i)) != 0u) {
+      vec3 outside = texelFetch(rsaa_colour, clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last), 0).rgb;
+      // As the fetch below: a NaN or infinite neighbour never spreads into this pixel.
+      if (!any(isnan(outside)) && !any(isinf(outside))) c = outside;
+    }
+    sum += c;
+  }
+  resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
+  return true;
+}
+#endif
+
 vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   uint codes[RSAA_SAMPLE_COUNT];
 #ifndef RSAA_PREPASS_MSAA
@@ -100,6 +162,10 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   float split;
   mask = rsaa_classify(similarity, rsaa_threshold, split);
   if (mask == RSAA_ALL_SIMILAR) return colour;
+#ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
+  vec4 resolved;
+  if (rsaa_multi_surface(pixel, centre_normal, colour, mask, resolved)) return resolved;
+#endif
   vec2 offset;
   int representative;
   rsaa_table_entry(mask, offset, representative);

@@ -68,6 +68,7 @@ std::vector<TechniqueOptions> default_techniques() {
   list.push_back(technique_options("agaa", 8));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
   for (const TechniqueOptions& o : rsaa_defaults()) list.push_back(o);
+  for (const TechniqueOptions& o : rsaa_extensions()) list.push_back(o);
   return list;
 }
 
