@@ -39,12 +39,11 @@ std::vector<TechniqueOptions> rsaa_defaults() {
 }
 
 std::vector<TechniqueOptions> rsaa_extensions() {
-  TechniqueOptions capped = technique_options("rsaa", 8), multi = capped, both = capped;
-  capped.split_cap = kRsaaSplitCap;
+  TechniqueOptions multi = technique_options("rsaa", 8);
   multi.multi_surface = "neighbours";
+  TechniqueOptions both = multi;
   both.split_cap = kRsaaSplitCap;
-  both.multi_surface = "neighbours";
-  return {capped, multi, both};
+  return {multi, both};
 }
 
 const std::vector<std::string>& technique_names() {

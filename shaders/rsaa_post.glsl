@@ -96,6 +96,8 @@ bool rsaa_centre_differs(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other) 
 // Returns false (the caller fetches as usual) for every other pixel.
 bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, out vec4 resolved) {
   resolved = colour;
+  // A non-finite pixel is left to the fetch path, which keeps it (as the CPU reference).
+  if (any(isnan(colour)) || any(isinf(colour))) return false;
   ivec2 last = ivec2(rsaa_viewport) - 1;
   vec3 position = rsaa_post_position(pixel);
   ivec2 first = ivec2(-1);

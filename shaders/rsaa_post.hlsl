@@ -150,6 +150,7 @@ bool RsaaCentreDiffers(int2 pixel, uint2 normal, float3 position, int2 other) {
 
 bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask, out float4 resolved) {
   resolved = colour;
+  if (any(isnan(colour)) || any(isinf(colour))) return false;
   int2 last = int2(rsaa_viewport) - 1;
   float3 position = RsaaViewPosition(pixel);
   int2 first = int2(-1, -1);
