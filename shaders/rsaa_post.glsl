@@ -105,16 +105,26 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   vec3 first_position = vec3(0.0);
   bool three = false;
   uint takes_outside = 0u;  // bit i: dissimilar subsample i takes its outside pixel's colour
+  // Each of the 8 outside pixels is compared once (bit (step.y + 1) * 3 + step.x + 1).
+  uint known = 0u, differing = 0u, compared = 0u;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     if ((mask & (1u << i)) != 0u) continue;
-    ivec2 q = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
-    if (!rsaa_centre_differs(pixel, centre_normal, position, q)) continue;
+    ivec2 step = rsaa_neighbours[i].xy;
+    uint bit = 1u << uint((step.y + 1) * 3 + step.x + 1);
+    ivec2 q = clamp(pixel + step, ivec2(0), last);
+    if ((known & bit) == 0u) {
+      known |= bit;
+      if (rsaa_centre_differs(pixel, centre_normal, position, q)) differing |= bit;
+    }
+    if ((differing & bit) == 0u) continue;
     takes_outside |= 1u << i;
     if (first.x < 0) {
       first = q;
       first_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
       first_position = rsaa_post_position(q);
-    } else if (!three) {
+      compared |= bit;
+    } else if (!three && (compared & bit) == 0u) {
+      compared |= bit;
       three = rsaa_centre_differs(first, first_normal, first_position, q);
     }
   }

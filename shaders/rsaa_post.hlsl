@@ -158,16 +158,25 @@ bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask,
   float3 first_position = float3(0.0, 0.0, 0.0);
   bool three = false;
   uint takes_outside = 0u;
+  uint known = 0u, differing = 0u, compared = 0u;  // per outside pixel, bit (step.y + 1) * 3 + step.x + 1
   [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     if ((mask & (1u << i)) != 0u) continue;
-    int2 q = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[i]), int2(0, 0), last);
-    if (!RsaaCentreDiffers(pixel, centre_normal, position, q)) continue;
+    int2 step = RsaaOutsideStep(rsaa_sample_positions[i]);
+    uint bit = 1u << uint((step.y + 1) * 3 + step.x + 1);
+    int2 q = clamp(pixel + step, int2(0, 0), last);
+    if ((known & bit) == 0u) {
+      known |= bit;
+      if (RsaaCentreDiffers(pixel, centre_normal, position, q)) differing |= bit;
+    }
+    if ((differing & bit) == 0u) continue;
     takes_outside |= 1u << i;
     if (first.x < 0) {
       first = q;
       first_normal = rsaa_centre_normal.Load(int3(q, 0));
       first_position = RsaaViewPosition(q);
-    } else if (!three) {
+      compared |= bit;
+    } else if (!three && (compared & bit) == 0u) {
+      compared |= bit;
       three = RsaaCentreDiffers(first, first_normal, first_position, q);
     }
   }
