@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
 #include <type_traits>
 
@@ -262,6 +263,18 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
   else if (settings.similarity != "sadp")
     throw std::invalid_argument("RSAA similarity '" + settings.similarity +
                                 "' is not one of sadp, depth, sadp-plane");
+  if (!(settings.split_cap == 0.0f || (settings.split_cap >= 1.0f && std::isfinite(settings.split_cap))))
+    throw std::invalid_argument("RSAA split_cap must be 0 (the paper's split) or a finite number >= 1");
+  if (settings.multi_surface != "fetch" && settings.multi_surface != "neighbours")
+    throw std::invalid_argument("RSAA multi_surface must be fetch or neighbours, not '" + settings.multi_surface + "'");
+  if (settings.split_cap > 0.0f) {
+    char cap[64];
+    std::snprintf(cap, sizeof cap, "%.9g", double(settings.split_cap));
+    std::string literal = cap;
+    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+    defines += "#define RSAA_SPLIT_CAP " + literal + "\n";
+  }
+  if (settings.multi_surface == "neighbours") defines += "#define RSAA_MULTI_SURFACE_NEIGHBOURS\n";
   if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
   return defines;
 }

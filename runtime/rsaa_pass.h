@@ -87,6 +87,17 @@ struct RsaaSettings {
   int auth = 0;                   // 0 none, 1 post-pass (halve offsets), 2 pre-pass (reclassify)
   float threshold = 0.4f;         // SADP units (sadp, sadp-plane), or percent of depth (depth)
   int code_bits = 8;              // 8 | 16 | 32: storage per subsample similarity
+  // Ours, beyond the paper, the defaults since they won on every bench scene (README "RSAA on
+  // pixels where 3+ surfaces meet"); 0 / "fetch" keep the paper's algorithm exactly:
+  // split_cap > 0 (>= 1): the k-means split (maxsim / 2 + threshold / 2) is capped at split_cap x
+  // threshold, so a subsample that clearly differs from the centre's surface counts as dissimilar
+  // even when a third, far more different surface (often the background) is in the pixel.
+  float split_cap = 1.5f;
+  // "fetch": one bilinear fetch per pixel (the paper). "neighbours": a pixel whose dissimilar
+  // subsamples point at outside pixels showing two different surfaces (3+ surfaces in the pixel)
+  // is resolved as the mean over its subsamples, each dissimilar one taking its outside pixel's
+  // colour (up to one texel fetch per subsample there); other pixels fetch as the paper.
+  std::string multi_surface = "neighbours";
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver); "msaa"
   // draws once into a multisample target with per-sample shading, which needs the driver's

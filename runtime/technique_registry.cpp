@@ -36,6 +36,8 @@ std::vector<TechniqueOptions> rsaa_variants() {
         TechniqueOptions o = technique_options("rsaa", samples);
         o.similarity = similarity;
         o.auth = auth;
+        o.split_cap = 0.0;  // the paper's split and resolve
+        o.multi_surface = "fetch";
         list.push_back(o);
       }
   return list;
@@ -43,6 +45,13 @@ std::vector<TechniqueOptions> rsaa_variants() {
 
 std::vector<TechniqueOptions> rsaa_defaults() {
   return {technique_options("rsaa", 4), technique_options("rsaa", 8)};
+}
+
+TechniqueOptions rsaa_default_without_extensions() {
+  TechniqueOptions o = technique_options("rsaa", 8);
+  o.split_cap = 0.0;
+  o.multi_surface = "fetch";
+  return o;
 }
 
 void validate(const TechniqueOptions& o) {

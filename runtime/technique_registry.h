@@ -24,6 +24,8 @@ struct TechniqueOptions {
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
   std::string table;                 // rsaa: an offset table file (JSON); empty: the built-in one
   std::string prepass = "jittered";  // rsaa: jittered | msaa (RsaaSettings::prepass)
+  double split_cap = 1.5;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
+  std::string multi_surface = "neighbours";  // rsaa: neighbours (default) | fetch (the paper's)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
                                      // paper's 0.1); 0: relative, agaa_k_pixels footprints
@@ -57,8 +59,12 @@ const std::vector<std::string>& technique_names();
 TechniqueOptions technique_options(const std::string& technique, int samples = 0);
 // The paper's 12 RSAA variants: samples 4 | 8 x similarity sadp | depth x auth 0 | 1 | 2.
 std::vector<TechniqueOptions> rsaa_variants();
-// RSAA 4x and 8x with this project's default options (sadp-plane, auth 0).
+// RSAA 4x and 8x with this project's default options (sadp-plane, auth 0, the split capped at
+// 1.5 thresholds, the multi-surface resolve).
 std::vector<TechniqueOptions> rsaa_defaults();
+// RSAA 8x sadp-plane with the paper's resolve (no split cap, one fetch everywhere): the default
+// before the extensions, measured beside them.
+TechniqueOptions rsaa_default_without_extensions();
 
 // The registry's validate, label and make for options.technique. validate throws
 // std::invalid_argument naming the bad option (unknown technique, unsupported sample count, ...).

@@ -140,6 +140,13 @@ uint rsaa_classify(float similarity[RSAA_SAMPLE_COUNT], float threshold, out flo
   split = maxsim;
   if (!(maxsim > threshold)) return all;
   split = 0.5 * maxsim + 0.5 * threshold;
+#ifdef RSAA_SPLIT_CAP
+  // Capped split (ours, RsaaSettings::split_cap): a subsample more than RSAA_SPLIT_CAP x the
+  // threshold away from the centre's surface is dissimilar however far the farthest one is, so a
+  // third surface between the centre's and a very different one (the background, 1e9) is not
+  // counted as the centre's. RSAA_SPLIT_CAP >= 1.
+  split = min(split, RSAA_SPLIT_CAP * threshold);
+#endif
   uint mask = 0u;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i)
     if (similarity[i] <= split) mask |= 1u << i;

@@ -12,6 +12,9 @@
 //   RSAA_PREPASS_MSAA_UNION  (optional, with RSAA_MS_SAMPLES m) codes of a union pattern: samples
 //                            0..m-1 in the first multisample texture, the shifted draw's in a
 //                            second one, read at the raster pixel rsaa_neighbours[i].zw away
+//   RSAA_SPLIT_CAP           (optional) cap of the k-means split, x threshold (rsaa_common.glsl)
+//   RSAA_MULTI_SURFACE_NEIGHBOURS  (optional) pixels whose dissimilar subsamples point at two
+//                            different surfaces: a sample average from the neighbours (below)
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
@@ -76,6 +79,77 @@ vec3 rsaa_post_position(ivec2 pixel) {
                             rsaa_inverse_projection, rsaa_viewport);
 }
 
+#ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
+// Does the centre of pixel `other` show another surface than the centre of `pixel` (normal
+// `normal`, view position `position`)? Background and surface differ; two surfaces compare with
+// the pass's similarity against the threshold.
+bool rsaa_centre_differs(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other) {
+  if (other == pixel) return false;
+  uvec2 other_normal = texelFetch(rsaa_post_centre_normal, other, 0).xy;
+  bool a = rsaa_is_surface(normal), b = rsaa_is_surface(other_normal);
+  if (a != b) return true;
+  if (!a) return false;
+  return rsaa_similarity(position, rsaa_decode_normal(normal), rsaa_post_position(other),
+                         rsaa_decode_normal(other_normal)) > rsaa_threshold;
+}
+
+// Multi-surface resolve (ours, RsaaSettings::multi_surface = "neighbours"). One bilinear fetch
+// blends the centre with neighbours of one quadrant, which suits two surfaces. When the outside
+// pixels nearest the dissimilar subsamples (rsaa_neighbours) show two surfaces that differ from
+// the centre's and from each other, the pixel holds 3+ surfaces: it is resolved as the mean over
+// its subsamples instead, a similar subsample taking the centre's colour and a dissimilar one
+// the colour of its outside pixel (the centre's when that pixel shows the centre's surface).
+// Returns false (the caller fetches as usual) for every other pixel.
+bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, out vec4 resolved) {
+  resolved = colour;
+  // A non-finite pixel is left to the fetch path, which keeps it (as the CPU reference).
+  if (any(isnan(colour)) || any(isinf(colour))) return false;
+  ivec2 last = ivec2(rsaa_viewport) - 1;
+  vec3 position = rsaa_post_position(pixel);
+  ivec2 first = ivec2(-1);
+  uvec2 first_normal = uvec2(0u);
+  vec3 first_position = vec3(0.0);
+  bool three = false;
+  uint takes_outside = 0u;  // bit i: dissimilar subsample i takes its outside pixel's colour
+  // Each of the 8 outside pixels is compared once (bit (step.y + 1) * 3 + step.x + 1).
+  uint known = 0u, differing = 0u, compared = 0u;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    if ((mask & (1u << i)) != 0u) continue;
+    ivec2 step = rsaa_neighbours[i].xy;
+    uint bit = 1u << uint((step.y + 1) * 3 + step.x + 1);
+    ivec2 q = clamp(pixel + step, ivec2(0), last);
+    if ((known & bit) == 0u) {
+      known |= bit;
+      if (rsaa_centre_differs(pixel, centre_normal, position, q)) differing |= bit;
+    }
+    if ((differing & bit) == 0u) continue;
+    takes_outside |= 1u << i;
+    if (first.x < 0) {
+      first = q;
+      first_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
+      first_position = rsaa_post_position(q);
+      compared |= bit;
+    } else if (!three && (compared & bit) == 0u) {
+      compared |= bit;
+      three = rsaa_centre_differs(first, first_normal, first_position, q);
+    }
+  }
+  if (!three) return false;
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    vec3 c = colour.rgb;
+    if ((takes_outside & (1u << i)) != 0u) {
+      vec3 outside = texelFetch(rsaa_colour, clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last), 0).rgb;
+      // As the fetch below: a NaN or infinite neighbour never spreads into this pixel.
+      if (!any(isnan(outside)) && !any(isinf(outside))) c = outside;
+    }
+    sum += c;
+  }
+  resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
+  return true;
+}
+#endif
+
 vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   uint codes[RSAA_SAMPLE_COUNT];
 #ifndef RSAA_PREPASS_MSAA
@@ -119,6 +193,11 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   vec2 offset;
   int representative;
   rsaa_table_entry(mask, offset, representative);
+#ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
+  // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
+  vec4 resolved;
+  if (offset != vec2(0.0) && rsaa_multi_surface(pixel, centre_normal, colour, mask, resolved)) return resolved;
+#endif
 #if RSAA_AUTH == 1
   // Post-pass authentication (paper section 2.4): if the outside pixel nearest to the
   // representative dissimilar subsample differs from the centre much more than that subsample

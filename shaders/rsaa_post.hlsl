@@ -11,6 +11,7 @@
 //   RSAA_AUTH              0 none, 1 post-pass authentication (2 is done in the pre-pass: 0 here)
 //   RSAA_CODE_BITS         8, 16 or 32: bits of a stored similarity code
 //   RSAA_SIMILARITY_DEPTH / RSAA_SIMILARITY_SADP_PLANE   (optional) as in rsaa_common.glsl
+//   RSAA_SPLIT_CAP, RSAA_MULTI_SURFACE_NEIGHBOURS          (optional) as in rsaa_post.glsl
 // Resources (registers overridable by defining RSAA_REGISTER_*):
 //   t0 colour (linear), t1 centre normal (uint2: rsaa_encode_normal, 0 = background), t2 centre
 //   depth (0 near .. 1 far), t3.. the codes: subsample i in channel i % 4 of texture i / 4, as
@@ -135,6 +136,65 @@ int2 RsaaOutsideStep(float2 sample_position) {
   return int2(sign(s) * floor(abs(s) + 0.5));
 }
 
+#ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
+// rsaa_post.glsl's rsaa_centre_differs and rsaa_multi_surface.
+bool RsaaCentreDiffers(int2 pixel, uint2 normal, float3 position, int2 other) {
+  if (all(other == pixel)) return false;
+  uint2 other_normal = rsaa_centre_normal.Load(int3(other, 0));
+  bool a = RsaaIsSurface(normal), b = RsaaIsSurface(other_normal);
+  if (a != b) return true;
+  if (!a) return false;
+  return RsaaSimilarity(position, RsaaDecodeNormal(normal), RsaaViewPosition(other), RsaaDecodeNormal(other_normal)) >
+         rsaa_threshold;
+}
+
+bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask, out float4 resolved) {
+  resolved = colour;
+  if (any(isnan(colour)) || any(isinf(colour))) return false;
+  int2 last = int2(rsaa_viewport) - 1;
+  float3 position = RsaaViewPosition(pixel);
+  int2 first = int2(-1, -1);
+  uint2 first_normal = uint2(0u, 0u);
+  float3 first_position = float3(0.0, 0.0, 0.0);
+  bool three = false;
+  uint takes_outside = 0u;
+  uint known = 0u, differing = 0u, compared = 0u;  // per outside pixel, bit (step.y + 1) * 3 + step.x + 1
+  [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    if ((mask & (1u << i)) != 0u) continue;
+    int2 step = RsaaOutsideStep(rsaa_sample_positions[i]);
+    uint bit = 1u << uint((step.y + 1) * 3 + step.x + 1);
+    int2 q = clamp(pixel + step, int2(0, 0), last);
+    if ((known & bit) == 0u) {
+      known |= bit;
+      if (RsaaCentreDiffers(pixel, centre_normal, position, q)) differing |= bit;
+    }
+    if ((differing & bit) == 0u) continue;
+    takes_outside |= 1u << i;
+    if (first.x < 0) {
+      first = q;
+      first_normal = rsaa_centre_normal.Load(int3(q, 0));
+      first_position = RsaaViewPosition(q);
+      compared |= bit;
+    } else if (!three && (compared & bit) == 0u) {
+      compared |= bit;
+      three = RsaaCentreDiffers(first, first_normal, first_position, q);
+    }
+  }
+  if (!three) return false;
+  float3 sum = float3(0.0, 0.0, 0.0);
+  [unroll] for (int j = 0; j < RSAA_SAMPLE_COUNT; ++j) {
+    float3 c = colour.rgb;
+    if ((takes_outside & (1u << j)) != 0u) {
+      float3 outside = rsaa_colour.Load(int3(clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[j]), int2(0, 0), last), 0)).rgb;
+      if (!any(isnan(outside)) && !any(isinf(outside))) c = outside;
+    }
+    sum += c;
+  }
+  resolved = float4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
+  return true;
+}
+#endif
+
 // ---- the post-process (rsaa_post.glsl)
 float4 RsaaResolve(int2 pixel) {
   uint codes[RSAA_SAMPLE_COUNT];
@@ -159,6 +219,9 @@ float4 RsaaResolve(int2 pixel) {
   }
   if (!(maxsim > rsaa_threshold)) return colour;
   float split = 0.5 * maxsim + 0.5 * rsaa_threshold;
+#ifdef RSAA_SPLIT_CAP
+  split = min(split, RSAA_SPLIT_CAP * rsaa_threshold);
+#endif
   uint mask = 0u;
   int representative = 0;  // Listing 3: the dissimilar subsample farthest from the centre
   float farthest = -1.0;
@@ -168,6 +231,12 @@ float4 RsaaResolve(int2 pixel) {
     else if (d >= farthest) { representative = k; farthest = d; }
   }
   float2 offset = rsaa_offsets[mask];
+#ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
+  // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
+  float4 resolved;
+  if (any(offset != float2(0.0, 0.0)) && RsaaMultiSurface(pixel, centre_normal, colour, mask, resolved))
+    return resolved;
+#endif
 #if RSAA_AUTH == 1
   int2 outside = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[representative]), int2(0, 0),
                        int2(rsaa_viewport) - 1);

@@ -27,6 +27,14 @@ class GlTest : public ::testing::Test {
   }
 };
 
+// `settings` with the paper's classification and resolve (no split cap, one fetch everywhere)
+// instead of this project's defaults: for tests of the paper's algorithm and its CPU reference.
+inline RsaaSettings paper_resolve(RsaaSettings settings = {}) {
+  settings.split_cap = 0.0f;
+  settings.multi_surface = "fetch";
+  return settings;
+}
+
 // A scene at its own camera drawn into the 1x targets RSAA reads (needs a current context).
 struct SceneFrame {
   SceneFrame(const std::string& scene_name, int width, int height)

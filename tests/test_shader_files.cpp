@@ -125,8 +125,10 @@ TEST(HlslPostProcess, CompilesForEveryTableAndOption) {
     for (const char* similarity : {"", "-DRSAA_SIMILARITY_DEPTH", "-DRSAA_SIMILARITY_SADP_PLANE"})
       for (int auth : {0, 1})
         for (int bits : {8, 32}) {
+          // The options beyond the paper with one combination each (compile time is the cost).
+          const char* extensions = bits == 32 ? " -DRSAA_SPLIT_CAP=3.0 -DRSAA_MULTI_SURFACE_NEIGHBOURS" : "";
           const std::string defines = count + " -DRSAA_AUTH=" + std::to_string(auth) +
-                                      " -DRSAA_CODE_BITS=" + std::to_string(bits) + " " + similarity;
+                                      " -DRSAA_CODE_BITS=" + std::to_string(bits) + " " + similarity + extensions;
           EXPECT_TRUE(compile_hlsl_post(dir, table, defines, dir.file("post.spv"), log))
               << table << " " << defines << "\n" << log;
         }
@@ -169,13 +171,24 @@ gl::Texture upside_down(GLuint texture, GLenum format, int width, int height, GL
 // The HLSL post-process, compiled to SPIR-V and translated to GLSL by spirv-cross, run on the
 // frame the GLSL post-process resolved, as Direct3D sees it (every input upside down: rows from
 // the top; depth in [0, 1] through its inverse projection): the same image, upside down.
-// Without and with post-pass authentication (which reads depth, normals and neighbour steps).
+// Without and with post-pass authentication (which reads depth, normals and neighbour steps);
+// parameter 2: without authentication, with the options beyond the paper (split cap, the
+// multi-surface resolve, which reads neighbour steps, normals, depth and colours).
 class HlslPostProcessOnGl : public test::GlTest, public ::testing::WithParamInterface<int> {};
 
 TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   constexpr int kWidth = 160, kHeight = 120;
   RsaaSettings settings;
-  settings.auth = GetParam();
+  settings.auth = GetParam() == 2 ? 0 : GetParam();
+  // 0, 1: the paper's resolve; 2: the extensions (split cap, multi-surface resolve).
+  std::string extensions;
+  settings.split_cap = 0.0f;
+  settings.multi_surface = "fetch";
+  if (GetParam() == 2) {
+    settings.split_cap = 2.5f;
+    settings.multi_surface = "neighbours";
+    extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS";
+  }
   const test::SceneFrame scene("builtin:default", kWidth, kHeight);
   const View& view = scene.view;
   RsaaPass pass(settings, kWidth, kHeight);
@@ -189,7 +202,7 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   const std::string spirv = dir.file("post.spv");
   ASSERT_TRUE(compile_hlsl_post(dir, "d3d8x",
                                 "-DRSAA_SAMPLE_COUNT=8 -DRSAA_CODE_BITS=8 -DRSAA_SIMILARITY_SADP_PLANE -DRSAA_AUTH=" +
-                                    std::to_string(settings.auth),
+                                    std::to_string(settings.auth) + extensions,
                                 spirv, log))
       << log;
   const auto cross = test::run_command("spirv-cross --version 450 --no-es " + spirv);
@@ -261,7 +274,7 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   expect_same_resampled_image(glsl_output.get(), hlsl_output.get(), frame.colour, kWidth, kHeight, true);
 }
 
-INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1));
+INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1, 2));
 
 TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
   test::TempDir dir;
@@ -284,6 +297,31 @@ TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
   EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
 }
 
+// The options beyond the paper reach all three files (and the paper's files have none of them).
+TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
+  test::TempDir dir;
+  const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --split-cap 2.5 --multi-surface neighbours");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* file : {"out/rsaa_prepass.glsl", "out/rsaa_post.frag", "out/rsaa_post.hlsl"}) {
+    const std::string text = test::read_text(dir.file(file));
+    EXPECT_NE(text.find("#define RSAA_SPLIT_CAP 2.5\n"), std::string::npos) << file;
+    EXPECT_NE(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS\n"), std::string::npos) << file;
+    EXPECT_NE(text.find("--split-cap 2.5 --multi-surface neighbours"), std::string::npos) << file;
+  }
+  EXPECT_EQ(glslang_errors("frag", test::read_text(dir.file("out/rsaa_post.frag"))), "");
+  const auto hlsl = test::run_command("glslangValidator -D -V -S frag -e RsaaPostPS -o " + dir.file("p.spv") + " " +
+                                      dir.file("out/rsaa_post.hlsl"));
+  EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
+  const auto paper =
+      test::run_rsaa("shaders --out-dir " + dir.file("paper") + " --similarity sadp --split-cap 0 --multi-surface fetch");
+  ASSERT_EQ(paper.exit_code, 0) << paper.output;
+  for (const char* file : {"paper/rsaa_prepass.glsl", "paper/rsaa_post.frag", "paper/rsaa_post.hlsl"}) {
+    const std::string text = test::read_text(dir.file(file));
+    EXPECT_EQ(text.find("#define RSAA_SPLIT_CAP"), std::string::npos) << file;
+    EXPECT_EQ(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS"), std::string::npos) << file;
+  }
+}
+
 TEST(GeneratedShaders, BadOptionsOrTablesAreRefusedAndWriteNothing) {
   test::TempDir dir;
   test::write_text(dir.file("broken.json"), "{\"pattern\": ");
@@ -292,6 +330,8 @@ TEST(GeneratedShaders, BadOptionsOrTablesAreRefusedAndWriteNothing) {
   EXPECT_NE(broken.output.find("broken.json"), std::string::npos) << broken.output;
   EXPECT_NE(test::run_rsaa("shaders --out-dir " + dir.file("out") + " --code-bits 12").exit_code, 0);
   EXPECT_NE(test::run_rsaa("shaders --out-dir " + dir.file("out") + " --pattern d3d9x").exit_code, 0);
+  EXPECT_NE(test::run_rsaa("shaders --out-dir " + dir.file("out") + " --split-cap 0.5").exit_code, 0);
+  EXPECT_NE(test::run_rsaa("shaders --out-dir " + dir.file("out") + " --multi-surface blur").exit_code, 0);
   EXPECT_FALSE(std::filesystem::exists(dir.file("out/rsaa_post.frag")));
 }
 

@@ -1,4 +1,6 @@
 // rsaa: the 1x frame with its G-buffer, the RsaaPass pre-pass, and the post-process.
+#include <sstream>
+
 #include "runtime/rsaa_pass.h"
 #include "runtime/techniques/techniques.h"
 
@@ -67,6 +69,8 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;
   s.code_bits = o.code_bits;
   s.prepass = o.prepass;
+  s.split_cap = float(o.split_cap);
+  s.multi_surface = o.multi_surface;
   return s;
 }
 
@@ -89,11 +93,23 @@ void validate_rsaa(const TechniqueOptions& o) {
   if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32) bad("rsaa --code-bits must be 8, 16 or 32");
   if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)
     bad("rsaa --threshold must be a finite number >= 0");
+  if (!(o.split_cap == 0.0 || (o.split_cap >= 1.0 && std::isfinite(o.split_cap))))
+    bad("rsaa --split-cap must be 0 (the paper's split) or a finite number >= 1");
+  if (o.multi_surface != "fetch" && o.multi_surface != "neighbours")
+    bad("rsaa --multi-surface must be fetch or neighbours, not '" + o.multi_surface + "'");
+}
+
+// " cap1.5 ms": the resolve's options beyond the paper, when used.
+std::string rsaa_extension_label(const TechniqueOptions& o) {
+  std::ostringstream label;
+  if (o.split_cap > 0.0) label << " cap" << o.split_cap;
+  if (o.multi_surface != "fetch") label << " ms";
+  return label.str();
 }
 
 std::string rsaa_label(const TechniqueOptions& o) {
   const std::string tail = " " + o.similarity + " auth" + std::to_string(o.auth) +
-                           (o.prepass == "jittered" ? "" : " " + o.prepass);
+                           (o.prepass == "jittered" ? "" : " " + o.prepass) + rsaa_extension_label(o);
   if (!o.table.empty()) {  // the table's file name stands for its pattern and sample count
     const std::size_t slash = o.table.find_last_of('/');
     std::string stem = o.table.substr(slash == std::string::npos ? 0 : slash + 1);

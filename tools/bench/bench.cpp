@@ -72,6 +72,7 @@ std::vector<TechniqueOptions> default_techniques() {
   TechniqueOptions multisample = technique_options("rsaa", 4);
   multisample.prepass = "msaa";
   list.push_back(multisample);
+  list.push_back(rsaa_default_without_extensions());
   return list;
 }
 

@@ -22,12 +22,20 @@ struct ShadersArgs {
   RsaaSettings settings;
 };
 
+std::string cap_text(float cap) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", double(cap));
+  return text;
+}
+
 // The command line that made a file, for its header.
 std::string command_line(const ShadersArgs& a) {
   const RsaaSettings& s = a.settings;
   return "rsaa shaders " + (a.table.empty() ? "--pattern " + a.pattern : "--table " + a.table) +
          " --similarity " + s.similarity + " --auth " + std::to_string(s.auth) + " --code-bits " +
-         std::to_string(s.code_bits) + " --prepass " + s.prepass + " --first-unit " +
+         std::to_string(s.code_bits) + (s.split_cap > 0.0f ? " --split-cap " + cap_text(s.split_cap) : "") +
+         (s.multi_surface == "fetch" ? "" : " --multi-surface " + s.multi_surface) + " --prepass " + s.prepass +
+         " --first-unit " +
          std::to_string(s.prepass_first_unit) + " --uniform-binding " + std::to_string(s.uniform_binding);
 }
 
@@ -59,6 +67,11 @@ int run_shaders(ShadersArgs a) {
                                std::to_string(a.settings.code_bits) + "\n";
     if (a.settings.similarity == "depth") hlsl_defines += "#define RSAA_SIMILARITY_DEPTH\n";
     if (a.settings.similarity == "sadp-plane") hlsl_defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
+    // The options beyond the paper, as rsaa_shader_defines() writes them.
+    for (const char* name : {"#define RSAA_SPLIT_CAP ", "#define RSAA_MULTI_SURFACE_NEIGHBOURS"}) {
+      const std::size_t at = defines.find(name);
+      if (at != std::string::npos) hlsl_defines += defines.substr(at, defines.find('\n', at) + 1 - at);
+    }
     files.push_back({a.out_dir + "/rsaa_post.hlsl",
                      header +
                          "// The post-process in HLSL (Direct3D conventions; shaders/rsaa_post.hlsl documents its\n"
@@ -95,6 +108,12 @@ Action add_shaders_command(CLI::App& app) {
   cmd->add_option("--code-bits", s.code_bits, "Bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16, 32}));
+  cmd->add_option("--split-cap", s.split_cap, "Ours: cap of the k-means split in thresholds (>= 1); 0 = the paper's")
+      ->capture_default_str()
+      ->check(finite_range(0.0, 1e30));
+  cmd->add_option("--multi-surface", s.multi_surface, "Ours: fetch (the paper) | neighbours (3+ surface pixels)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fetch", "neighbours"}));
   cmd->add_option("--prepass", s.prepass, "jittered (one draw per subsample) | msaa (one multisample draw)")
       ->capture_default_str()
       ->check(CLI::IsMember({"jittered", "msaa"}));

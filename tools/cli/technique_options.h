@@ -34,6 +34,15 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "draw with per-sample shading, where the driver samples the table's positions; two "
                   "draws, the second shifted, for a union pattern such as tables/custom-gl4x-union.json)")
       ->capture_default_str();
+  cmd->add_option("--split-cap", o.split_cap,
+                  "rsaa (ours): cap the k-means split at this many thresholds (>= 1), so a clearly different "
+                  "subsample is dissimilar even beside a far more different third surface; 0 = the paper's split")
+      ->capture_default_str()
+      ->check(finite_range(0.0, 1e30));
+  cmd->add_option("--multi-surface", o.multi_surface,
+                  "rsaa (ours): fetch (one bilinear fetch, the paper) | neighbours (pixels whose dissimilar "
+                  "subsamples point at two different surfaces: mean over subsamples of the outside pixels' colours)")
+      ->capture_default_str();
   cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
       ->check(kWholeNumber);
