@@ -1,7 +1,8 @@
 // The techniques by name (docs/conventions.md section 4): their options, and the registry that
 // names, validates, labels and makes each one. A technique registers itself in its own file
 // (runtime/techniques/NAME.cpp returns its TechniqueKind) and is listed once in
-// runtime/techniques/registry.cpp: a new technique is one source file, its shaders and one line.
+// runtime/techniques/registry.cpp: a new technique is one source file, its shaders and one line
+// (options of its own are fields of TechniqueOptions and flags in tools/cli/technique_options.h).
 #pragma once
 
 #include <memory>

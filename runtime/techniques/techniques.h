@@ -17,16 +17,6 @@
 
 namespace rsaa {
 
-TechniqueKind noaa_technique();
-TechniqueKind fxaa_technique();
-TechniqueKind msaa_technique();
-TechniqueKind ssaa_technique();
-TechniqueKind filtered_ssaa_technique();
-TechniqueKind rsaa_technique();
-TechniqueKind dcaa_technique();
-TechniqueKind dyncov_technique();
-TechniqueKind agaa_technique();
-
 // For techniques that take no --samples.
 inline void reject_samples(const TechniqueOptions& o) {
   if (o.samples > 1) throw std::invalid_argument(o.technique + " takes no --samples");

@@ -13,7 +13,10 @@ namespace rsaa::cli {
 constexpr double kSceneLoadSeconds = 40.0;
 
 inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
-  cmd->add_option("--technique", o.technique, "noaa | fxaa | msaa | ssaa | ssaa-filtered | rsaa | dcaa | dyncov | agaa")->capture_default_str();
+  std::string techniques;  // from the registry: name (description), ...
+  for (const TechniqueKind& kind : registered_techniques())
+    techniques += (techniques.empty() ? "" : "; ") + kind.name + ": " + kind.description;
+  cmd->add_option("--technique", o.technique, techniques)->capture_default_str();
   cmd->add_option("--samples", o.samples,
                   "msaa: 4 (hardware); ssaa: 8 (d3d8x) | 16 | 64; rsaa: 4 | 8 (default 8); agaa: 4 (hardware) | 8 "
                   "(jittered, default) | 16 (jittered)")
