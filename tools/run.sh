@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Set-up, build, and the main job on the built-in default scene: render it with no AA, RSAA 8x
-# (SADP, post-pass authentication) and the 64x SSAA reference, compare both with the reference,
+# (the default options) and the 64x SSAA reference, compare both with the reference,
 # and make side-by-side crops. Also trains the d3d8x table and checks that it reproduces the
 # checked-in one byte for byte. Everything lands in out/.
 set -euo pipefail
