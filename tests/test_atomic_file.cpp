@@ -67,6 +67,37 @@ TEST(AtomicFiles, TemporariesOfDeadRunsAreRemovedOthersKept) {
   EXPECT_EQ(test::read_text(dir.file("t.json")), "{}");
 }
 
+// kill -9 among the renames: a child replaces the first file of three and dies (_exit, no
+// unwinding); the set is mixed until the next write into the directory, which finishes the dead
+// run's commit from its journal before its own, and leaves no temporary behind.
+TEST(AtomicFiles, ARunKilledAmongItsRenamesIsFinishedByTheNext) {
+  TempDir dir;
+  for (const char* ext : {"json", "glsl", "hlsl"}) test::write_text(dir.file(std::string("t.") + ext), "old");
+  const pid_t child = fork();
+  if (child == 0) {
+    int calls = 0;
+    const RenameFn dies_at_the_second = [&](const std::string& from, const std::string& to, std::string&) {
+      if (++calls == 2) _exit(9);
+      return std::rename(from.c_str(), to.c_str()) == 0;
+    };
+    write_files_atomically({{dir.file("t.json"), "new json"}, {dir.file("t.glsl"), "new glsl"}, {dir.file("t.hlsl"), "new hlsl"}},
+                           dies_at_the_second);
+    _exit(0);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 9) << "the child did not die among its renames";
+  EXPECT_EQ(test::read_text(dir.file("t.json")), "new json");  // mixed, for now
+  EXPECT_EQ(test::read_text(dir.file("t.glsl")), "old");
+  EXPECT_GT(files_in(dir.path()), 3u) << "the dead run's temporaries and journal";
+
+  write_file_atomically(dir.file("other.txt"), "x");  // any later write into the directory
+  EXPECT_EQ(test::read_text(dir.file("t.json")), "new json");
+  EXPECT_EQ(test::read_text(dir.file("t.glsl")), "new glsl");
+  EXPECT_EQ(test::read_text(dir.file("t.hlsl")), "new hlsl");
+  EXPECT_EQ(files_in(dir.path()), 4u) << "temporaries, backups or the journal left behind";
+}
+
 TEST(AtomicFiles, ATargetThatIsNotAFileIsRefusedBeforeAnythingChanges) {
   TempDir dir;
   test::write_text(dir.file("t.json"), "old");

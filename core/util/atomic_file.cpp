@@ -89,6 +89,65 @@ std::string directory_of(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
+// The PID in a temporary's name (DIR/.STEM.tmp-PID-N.EXT), or 0.
+pid_t pid_of_temporary(const std::string& name) {
+  const std::size_t at = name.find(".tmp-");
+  if (name.empty() || name[0] != '.' || at == std::string::npos) return 0;
+  std::size_t digits = at + 5, end_digits = digits;
+  while (end_digits < name.size() && std::isdigit(static_cast<unsigned char>(name[end_digits]))) ++end_digits;
+  if (end_digits == digits || end_digits - digits > 9) return 0;
+  return static_cast<pid_t>(std::stol(name.substr(digits, end_digits - digits)));
+}
+
+// Only a PID that no longer exists marks a dead run; a live one may be mid-commit.
+bool is_dead(pid_t pid) { return pid > 0 && pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH; }
+
+// The commit journal: written (atomically) once every temporary is in place and before the first
+// rename, removed after the last. A run killed between the two leaves it; the next run in that
+// directory finishes the renames (roll forward), so a set is never left mixed. Each record is
+// "<length>:<temporary><length>:<target>" with absolute paths (any byte may be in a name).
+constexpr const char* kJournalStem = ".rsaa-commit";
+
+std::string journal_path(const std::string& dir) {
+  // DIR/.rsaa-commit.tmp-PID-N.journal: named by its run's PID like every temporary.
+  return temporary_path_beside((fs::path(dir) / (std::string(kJournalStem).substr(1) + ".journal")).string());
+}
+
+std::string journal_text(const std::vector<std::string>& temporaries,
+                         const std::vector<std::pair<std::string, std::string>>& files) {
+  std::string text;
+  const auto field = [&](const std::string& path) {
+    const std::string absolute = fs::absolute(path).string();
+    text += std::to_string(absolute.size()) + ":" + absolute;
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) field(temporaries[i]), field(files[i].first);
+  return text;
+}
+
+// Finishes the renames a dead run's journal lists (the temporaries still there); false when the
+// journal cannot be read or parsed (it is then left for a person to look at).
+bool roll_forward(const std::string& journal) {
+  std::string text;
+  try {
+    text = read_whole_file(journal, std::uint64_t{1} << 20, "commit journal");
+  } catch (const std::exception&) {
+    return false;
+  }
+  std::vector<std::string> fields;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t colon = text.find(':', at);
+    if (colon == std::string::npos || colon == at || colon - at > 6) return false;
+    const std::size_t length = std::stoul(text.substr(at, colon - at));
+    if (colon + 1 + length > text.size()) return false;
+    fields.push_back(text.substr(colon + 1, length));
+    at = colon + 1 + length;
+  }
+  if (fields.size() % 2 != 0) return false;
+  for (std::size_t i = 0; i < fields.size(); i += 2)
+    if (::access(fields[i].c_str(), F_OK) == 0) ::rename(fields[i].c_str(), fields[i + 1].c_str());
+  return true;
+}
+
 }  // namespace
 
 std::string temporary_path_beside(const std::string& target) {
@@ -102,17 +161,17 @@ std::string temporary_path_beside(const std::string& target) {
 std::size_t remove_stale_temporaries(const std::string& dir) {
   std::size_t removed = 0;
   std::error_code ec;
+  // First the commits dead runs left half done: finished, so that their temporaries are targets.
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    const std::size_t at = name.find(".tmp-");
-    if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
-    std::size_t digits = at + 5, end_digits = digits;
-    while (end_digits < name.size() && std::isdigit(static_cast<unsigned char>(name[end_digits])))
-      ++end_digits;
-    if (end_digits == digits || end_digits - digits > 9) continue;
-    const pid_t pid = static_cast<pid_t>(std::stol(name.substr(digits, end_digits - digits)));
-    // Only a PID that no longer exists marks a dead run; a live one may be mid-commit.
-    if (pid <= 0 || pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    if (name.rfind(kJournalStem, 0) != 0 || !is_dead(pid_of_temporary(name))) continue;
+    std::error_code ignored;
+    if (fs::is_regular_file(it->symlink_status(ignored)) && roll_forward(it->path().string()))
+      fs::remove(it->path(), ignored);
+  }
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(kJournalStem, 0) == 0 || !is_dead(pid_of_temporary(name))) continue;
     std::error_code ignored;
     if (fs::is_regular_file(it->symlink_status(ignored)) && fs::remove(it->path(), ignored))
       ++removed;
@@ -122,6 +181,7 @@ std::size_t remove_stale_temporaries(const std::string& dir) {
 
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files,
                             const RenameFn& rename) {
+  if (files.empty()) return;
   std::set<std::string> dirs;
   for (const auto& file : files) dirs.insert(directory_of(file.first));
   for (const std::string& dir : dirs) remove_stale_temporaries(dir);
@@ -160,6 +220,21 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
     remove_all(backups);
     throw;
   }
+  // The journal that lets the next run finish these renames should this one die among them.
+  const std::string journal = journal_path(directory_of(files.front().first));
+  try {
+    const std::string journal_temporary = temporary_path_beside(journal);
+    write_temporary(journal, journal_temporary, journal_text(temporaries, files));
+    std::string error;
+    if (!system_rename(journal_temporary, journal, error)) {
+      ::unlink(journal_temporary.c_str());
+      throw std::runtime_error(journal + ": cannot write the commit journal (" + error + "); nothing was changed");
+    }
+  } catch (...) {
+    remove_all(temporaries);
+    remove_all(backups);
+    throw;
+  }
 
   for (std::size_t i = 0; i < files.size(); ++i) {
     std::string error;
@@ -175,10 +250,12 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
     }
     remove_all(std::vector<std::string>(temporaries.begin() + i, temporaries.end()));
     remove_all(backups);
+    ::unlink(journal.c_str());
     throw std::runtime_error(files[i].first + ": cannot replace (" + error + "); " +
                              (undo_error.empty() ? "the previous files are left as they were"
                                                  : "could not restore:" + undo_error));
   }
+  ::unlink(journal.c_str());
   remove_all(backups);
 }
 

@@ -28,8 +28,10 @@ void write_file_atomically(const std::string& path, const std::string& contents)
 
 // Several files that belong together: all temporaries are written first, then renamed. When a
 // rename fails midway, the targets already replaced get their previous contents back (kept as
-// hard links until the commit is done), so the set is never mixed. Temporaries of runs that
-// died (kill -9) are removed from the target directories first.
+// hard links until the commit is done), so the set is never mixed. A run killed among its renames
+// (kill -9) leaves a commit journal beside the first file: the next write into that directory
+// (or remove_stale_temporaries) finishes the renames it lists, then removes the dead run's
+// temporaries.
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
 // The same with the rename made injectable, for tests of a failing rename.
@@ -40,7 +42,8 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
 // A fresh temporary name beside `target` for this process: DIR/.STEM.tmp-PID-N.EXT (the
 // extension is kept so that format-by-extension writers still work).
 std::string temporary_path_beside(const std::string& target);
-// Removes DIR/.*.tmp-PID-* files whose PID is no longer running; returns how many.
+// Finishes the commits of dead runs in DIR (their journals), then removes DIR/.*.tmp-PID-* files
+// whose PID is no longer running; returns how many temporaries it removed.
 std::size_t remove_stale_temporaries(const std::string& dir);
 
 // Checks that `path` is a regular file of at most `max_bytes` without blocking on it (FIFOs and
