@@ -184,15 +184,15 @@ CoverageListTechnique::CoverageListTechnique(const SamplePattern& coverage_patte
                                              int width, int height, bool z_prepass)
     : lists_(coverage_pattern, width, height),
       resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")),
-      continue_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("coverage_pending.vert")},
-                                  {GL_FRAGMENT_SHADER, gl::shader_source("coverage_resolve.frag")}},
-                                 "#define " + resolve_define + "\n#define COVERAGE_CONTINUE\n",
-                                 "coverage_resolve.frag (continuation)")) {
+      continue_(make_fullscreen_program("coverage_resolve.frag",
+                                        "#define " + resolve_define + "\n#define COVERAGE_CONTINUE\n")),
+      pending_index_(gl::make_texture_2d(GL_R32UI, width, height)) {
   if (z_prepass) lists_.enable_z_prepass();
   GLuint id;
   glCreateBuffers(1, &id);
   pending_counter_ = gl::Buffer(id);
   glNamedBufferStorage(id, 12, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  for (GLuint p : resolve_programs()) glProgramUniform1i(p, glGetUniformLocation(p, "u_pending_index"), 1);
   allocate_pending(std::max(64, width * height / 256));
   gl::check("coverage technique: pending entries");
 }
@@ -207,7 +207,7 @@ void CoverageListTechnique::allocate_pending(std::size_t capacity) {
 
 double CoverageListTechnique::bytes_per_pixel() const {
   const glm::ivec2 size = lists_.size();
-  return lists_.bytes_per_pixel() + double(pending_capacity_) * kPendingUints * 4 / (double(size.x) * size.y);
+  return lists_.bytes_per_pixel() + 4.0 + double(pending_capacity_) * kPendingUints * 4 / (double(size.x) * size.y);
 }
 
 void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLuint output) {
@@ -226,8 +226,8 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
     lists_.bind_for_resolve(p);
     glProgramUniform3f(p, glGetUniformLocation(p, "u_background"), bg.r, bg.g, bg.b);
   }
-  glProgramUniform2f(continue_.get(), glGetUniformLocation(continue_.get(), "u_viewport"), float(view.width),
-                     float(view.height));
+  const std::uint32_t none = 0;
+  glClearTexImage(pending_index_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
   glBindFramebuffer(GL_FRAMEBUFFER, output_target_.get({{output}}));
   glViewport(0, 0, view.width, view.height);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, pending_counter_.get());
@@ -239,30 +239,29 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
     counter[1] = std::uint32_t(std::min<std::size_t>(pending_capacity_, 0xffffffffu));
     glNamedBufferSubData(pending_counter_.get(), 0, sizeof counter, counter);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, pending_entries_.get());
+    glBindImageTexture(1, pending_index_.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glUseProgram(program);
     draw_fullscreen_triangle();
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glGetNamedBufferSubData(pending_counter_.get(), 0, 4, &counter[0]);
     if (counter[0] <= pending_capacity_ || attempt == 1) break;
     allocate_pending(std::size_t(counter[0]) + counter[0] / 4);
   }
   pending_ = std::min<std::size_t>(counter[0], pending_capacity_);
+  timer_.end();
+  timer_.begin("resolve long lists");
   // Continuation passes until every entry is done (each walks a bounded part of its list).
   continuation_passes_ = 0;
   if (pending_) {
-    GLuint id;  // core profile needs a bound VAO even without attributes
-    glCreateVertexArrays(1, &id);
-    const gl::VertexArray empty(id);
-    glBindVertexArray(id);
+    glBindImageTexture(1, pending_index_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     glUseProgram(continue_.get());
     for (std::uint32_t active = 1; active; ++continuation_passes_) {
       active = 0;
       glNamedBufferSubData(pending_counter_.get(), 8, 4, &active);
-      glDrawArrays(GL_POINTS, 0, GLsizei(pending_));
+      draw_fullscreen_triangle();
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
       glGetNamedBufferSubData(pending_counter_.get(), 8, 4, &active);
     }
-    glBindVertexArray(0);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   timer_.end();

@@ -72,8 +72,8 @@ class CoverageFragmentLists {
 // drawn fullscreen with the scene's background as the clear colour. dcaa and dyncov are this
 // with their coverage pattern and per-pixel update. A list longer than the resolve sorts
 // locally (32 records) becomes a pending entry (kPendingUints uints: the technique's state and
-// how far its replay got), resumed by continuation passes, one point per entry, until every
-// entry is done: each pass does bounded work (llvmpipe silently ends a shader invocation's
+// how far its replay got; an R32UI image maps pixels to entries), resumed by fullscreen
+// continuation passes until every entry is done: each pass does bounded work (llvmpipe silently ends a shader invocation's
 // loops after 65535 iterations), so any list is replayed whole and in order.
 class CoverageListTechnique : public Technique {
  public:
@@ -97,6 +97,7 @@ class CoverageListTechnique : public Technique {
   CoverageFragmentLists lists_;
   gl::Program resolve_, continue_;
   gl::CachedFramebuffer output_target_;
+  gl::Texture pending_index_;
   gl::Buffer pending_counter_, pending_entries_;
   std::size_t pending_capacity_ = 0, pending_ = 0;
   int continuation_passes_ = 0;

@@ -10,12 +10,13 @@
 // Bounded work per invocation: llvmpipe ends every loop of a shader invocation once their
 // iterations together reach 65535 (LP_MAX_TGSI_LOOP_ITERATIONS, shared by all loops and by the
 // pixels shaded together), silently: a long list replayed in one invocation lost its fragments
-// and came out as the background. So the first pass (fullscreen.vert) resolves the lists of up
-// to SORT_SLOTS records, which it sorts locally; a longer list becomes a pending entry (its
-// technique state, CoverageListTechnique::render) and the continuation passes
-// (COVERAGE_CONTINUE: coverage_pending.vert, one point per entry) resume it: each walks at most
+// and came out as the background. So the first pass resolves the lists of up to SORT_SLOTS
+// records, which it sorts locally; a longer list becomes a pending entry (its technique state,
+// CoverageListTechnique::render) and the continuation passes (COVERAGE_CONTINUE, fullscreen
+// too: long lists come in clusters, which then share SIMD lanes) resume it: each walks at most
 // SCAN_PER_PASS records, keeping the SORT_SLOTS smallest primitive orders above the last one
-// replayed in a max-heap; a finished walk replays them in order. Any length, bounded per pass.
+// replayed in a max-heap; a finished walk replays them in order, and another walk starts while
+// the pass has rounds left. Any length, bounded per pass.
 #include "coverage_record.glsl"
 
 layout(r32ui) uniform readonly uimage2D u_heads;
@@ -23,9 +24,16 @@ uniform vec3 u_background;  // linear clear colour
 out vec4 o_colour;
 
 const int SORT_SLOTS = 32;  // lists up to this length are sorted locally; longer ones are pending
-const uint SCAN_PER_PASS = 2048u;  // records a continuation pass walks
+// A continuation pass runs at most ROUNDS_PER_PASS rounds, each a walk of at most SCAN_PER_PASS
+// records (1 + log2(SORT_SLOTS) loop iterations a record) and, once a walk ends, the replay of
+// SORT_SLOTS records (up to ~400 loop iterations each, in insert_fragment). The pixels shaded
+// together share the limit and may be in different rounds: the bound is per round, about
+// 2 x (6 x 1024 + 32 x 400) = 38000 of 65535.
+const uint SCAN_PER_PASS = 1024u;
+const int ROUNDS_PER_PASS = 2;
 
-// Pending entries (long lists), COVERAGE_PENDING_UINTS uints each: 0 pixel (x | y << 16),
+// Pending entries (long lists), PENDING_UINTS uints each (u_pending_index gives a pixel's
+// entry + 1, 0 for none): 0 unused,
 // 1 flags (1 started, 2 done), 2 last primitive order replayed, 3 cursor (next record to walk),
 // 4 heap size, then the heap's keys and record indices, then the technique's state (save_state).
 layout(std430, binding = 2) coherent buffer CoveragePendingCounter {
@@ -325,13 +333,15 @@ void init_state() {
 }
 
 #ifdef COVERAGE_CONTINUE
-flat in uint v_entry;
+layout(r32ui) uniform readonly uimage2D u_pending_index;
 
 void main() {
-  uint b = v_entry * PENDING_UINTS;
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  uint entry = imageLoad(u_pending_index, pixel).x;
+  if (entry == 0u) discard;
+  uint b = (entry - 1u) * PENDING_UINTS;
   uint flags = coverage_pending[b + 1u];
   if ((flags & 2u) != 0u) discard;
-  ivec2 pixel = ivec2(coverage_pending[b] & 0xffffu, coverage_pending[b] >> 16);
   uint head = imageLoad(u_heads, pixel).x;
   uint capacity = coverage_record_capacity;
   uint last = coverage_pending[b + 2u], cursor = coverage_pending[b + 3u];
@@ -341,14 +351,15 @@ void main() {
     h_keys[k] = coverage_pending[b + 5u + uint(k)];
     h_indices[k] = coverage_pending[b + 5u + uint(SORT_SLOTS + k)];
   }
-  for (uint walked = 0u; walked < SCAN_PER_PASS && cursor != COVERAGE_LIST_END && cursor < capacity; ++walked) {
-    uint key = coverage_records[cursor * COVERAGE_RECORD_UINTS + 1u];
-    if (!started || key > last) heap_offer(key, cursor);
-    cursor = coverage_records[cursor * COVERAGE_RECORD_UINTS];
-  }
   load_state(b + PENDING_STATE);
   bool done = false;
-  if (cursor == COVERAGE_LIST_END || cursor >= capacity) {
+  for (int round = 0; round < ROUNDS_PER_PASS; ++round) {
+    for (uint walked = 0u; walked < SCAN_PER_PASS && cursor != COVERAGE_LIST_END && cursor < capacity; ++walked) {
+      uint key = coverage_records[cursor * COVERAGE_RECORD_UINTS + 1u];
+      if (!started || key > last) heap_offer(key, cursor);
+      cursor = coverage_records[cursor * COVERAGE_RECORD_UINTS];
+    }
+    if (cursor != COVERAGE_LIST_END && cursor < capacity) break;  // the walk goes on next pass
     // A whole walk: its heap holds the next records in primitive order.
     heap_sort();
     for (int k = 0; k < h_size; ++k) insert_fragment(coverage_load(h_indices[k]));
@@ -359,6 +370,7 @@ void main() {
     done = h_size < SORT_SLOTS;  // fewer than asked for: none are left
     h_size = 0;
     cursor = head;
+    if (done) break;
   }
   if (done) {
     coverage_pending[b + 1u] = 2u;
@@ -379,6 +391,8 @@ void main() {
 }
 
 #else
+layout(r32ui) uniform writeonly uimage2D u_pending_index;  // cleared to 0; entry + 1
+
 void main() {
   init_state();
   uint head = imageLoad(u_heads, ivec2(gl_FragCoord.xy)).x;
@@ -407,7 +421,7 @@ void main() {
     uint e = atomicAdd(pending_used, 1u);
     if (e < pending_capacity) {
       uint b = e * PENDING_UINTS;
-      coverage_pending[b] = uint(gl_FragCoord.x) | (uint(gl_FragCoord.y) << 16);
+      imageStore(u_pending_index, ivec2(gl_FragCoord.xy), uvec4(e + 1u));
       coverage_pending[b + 1u] = 0u;
       coverage_pending[b + 2u] = 0u;
       coverage_pending[b + 3u] = head;

@@ -134,7 +134,7 @@ TEST_F(CoverageGl, ListsLongerThanTheLocalSortAreReplayedInOrderToo) {
 // Lists of hundreds and thousands of fragments (the 2CylinderEngine at 640x480 has up to 311):
 // replayed in one invocation they ran into llvmpipe's 65535 loop iterations per invocation and
 // lost their fragments (the background came out). Every pixel equals the CPU reference; 2600
-// records are more than one continuation pass walks (2048).
+// records take a continuation pass more than one walk (1024 records).
 TEST_F(CoverageGl, ThousandsOfStackedFragmentsEqualTheCpuReference) {
   for (int count : {400, 2600}) {
     const Scene scene = stacked_triangles(count);
