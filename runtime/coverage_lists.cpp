@@ -183,8 +183,31 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
 CoverageListTechnique::CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define,
                                              int width, int height, bool z_prepass)
     : lists_(coverage_pattern, width, height),
-      resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")) {
+      resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")),
+      continue_(make_fullscreen_program("coverage_resolve.frag",
+                                        "#define " + resolve_define + "\n#define COVERAGE_CONTINUE\n")),
+      pending_index_(gl::make_texture_2d(GL_R32UI, width, height)) {
   if (z_prepass) lists_.enable_z_prepass();
+  GLuint id;
+  glCreateBuffers(1, &id);
+  pending_counter_ = gl::Buffer(id);
+  glNamedBufferStorage(id, 12, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  for (GLuint p : resolve_programs()) glProgramUniform1i(p, glGetUniformLocation(p, "u_pending_index"), 1);
+  allocate_pending(std::max(64, width * height / 256));
+  gl::check("coverage technique: pending entries");
+}
+
+void CoverageListTechnique::allocate_pending(std::size_t capacity) {
+  GLuint id;
+  glCreateBuffers(1, &id);
+  pending_entries_ = gl::Buffer(id);
+  glNamedBufferStorage(id, GLsizeiptr(capacity * kPendingUints * 4), nullptr, 0);
+  pending_capacity_ = capacity;
+}
+
+double CoverageListTechnique::bytes_per_pixel() const {
+  const glm::ivec2 size = lists_.size();
+  return lists_.bytes_per_pixel() + 4.0 + double(pending_capacity_) * kPendingUints * 4 / (double(size.x) * size.y);
 }
 
 void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLuint output) {
@@ -198,13 +221,48 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
   timer_.end();
   timer_.begin("resolve");
   const GLuint program = resolve_.get();
-  lists_.bind_for_resolve(program);
   const glm::vec3 bg = scene.background();
-  glProgramUniform3f(program, glGetUniformLocation(program, "u_background"), bg.r, bg.g, bg.b);
+  for (GLuint p : resolve_programs()) {
+    lists_.bind_for_resolve(p);
+    glProgramUniform3f(p, glGetUniformLocation(p, "u_background"), bg.r, bg.g, bg.b);
+  }
+  const std::uint32_t none = 0;
+  glClearTexImage(pending_index_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
   glBindFramebuffer(GL_FRAMEBUFFER, output_target_.get({{output}}));
   glViewport(0, 0, view.width, view.height);
-  glUseProgram(program);
-  draw_fullscreen_triangle();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, pending_counter_.get());
+  // First pass: the short lists; the long ones become pending entries (grown and drawn again
+  // if they overflowed).
+  std::uint32_t counter[3] = {0u, 0u, 0u};
+  for (int attempt = 0;; ++attempt) {
+    counter[0] = 0u;
+    counter[1] = std::uint32_t(std::min<std::size_t>(pending_capacity_, 0xffffffffu));
+    glNamedBufferSubData(pending_counter_.get(), 0, sizeof counter, counter);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, pending_entries_.get());
+    glBindImageTexture(1, pending_index_.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+    glUseProgram(program);
+    draw_fullscreen_triangle();
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(pending_counter_.get(), 0, 4, &counter[0]);
+    if (counter[0] <= pending_capacity_ || attempt == 1) break;
+    allocate_pending(std::size_t(counter[0]) + counter[0] / 4);
+  }
+  pending_ = std::min<std::size_t>(counter[0], pending_capacity_);
+  timer_.end();
+  timer_.begin("resolve long lists");
+  // Continuation passes until every entry is done (each walks a bounded part of its list).
+  continuation_passes_ = 0;
+  if (pending_) {
+    glBindImageTexture(1, pending_index_.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glUseProgram(continue_.get());
+    for (std::uint32_t active = 1; active; ++continuation_passes_) {
+      active = 0;
+      glNamedBufferSubData(pending_counter_.get(), 8, 4, &active);
+      draw_fullscreen_triangle();
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+      glGetNamedBufferSubData(pending_counter_.get(), 8, 4, &active);
+    }
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   timer_.end();
   gl::check("coverage lists: resolve");

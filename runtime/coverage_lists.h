@@ -49,6 +49,7 @@ class CoverageFragmentLists {
   // Bytes per pixel of the buffers as allocated (heads + record capacity).
   double bytes_per_pixel() const;
   std::size_t fragments() const { return fragments_; }
+  glm::ivec2 size() const { return {width_, height_}; }
 
  private:
   void allocate_records(std::size_t capacity);
@@ -69,20 +70,37 @@ class CoverageFragmentLists {
 
 // A coverage technique: the lists, then `resolve_define`'s variant of coverage_resolve.frag
 // drawn fullscreen with the scene's background as the clear colour. dcaa and dyncov are this
-// with their coverage pattern and per-pixel update.
+// with their coverage pattern and per-pixel update. A list longer than the resolve sorts
+// locally (32 records) becomes a pending entry (kPendingUints uints: the technique's state and
+// how far its replay got; an R32UI image maps pixels to entries), resumed by fullscreen
+// continuation passes until every entry is done: each pass does bounded work (llvmpipe silently ends a shader invocation's
+// loops after 65535 iterations), so any list is replayed whole and in order.
 class CoverageListTechnique : public Technique {
  public:
   CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define, int width,
                         int height, bool z_prepass = false);
   void render(const GpuScene& scene, const View& view, GLuint output) override;
-  double bytes_per_pixel() const override { return lists_.bytes_per_pixel(); }
+  double bytes_per_pixel() const override;
   CoverageFragmentLists* coverage_lists() { return &lists_; }
-  GLuint resolve_program() const { return resolve_.get(); }
+  // Both resolve programs (the first pass, the continuation) take the technique's uniforms.
+  std::vector<GLuint> resolve_programs() const { return {resolve_.get(), continue_.get()}; }
+  // Entries the last render left pending (lists longer than the local sort) and its
+  // continuation passes.
+  std::size_t pending_pixels() const { return pending_; }
+  int continuation_passes() const { return continuation_passes_; }
+
+  static constexpr int kPendingUints = 128;  // coverage_resolve.frag's PENDING_UINTS
 
  protected:
+  void allocate_pending(std::size_t capacity);
+
   CoverageFragmentLists lists_;
-  gl::Program resolve_;
+  gl::Program resolve_, continue_;
   gl::CachedFramebuffer output_target_;
+  gl::Texture pending_index_;
+  gl::Buffer pending_counter_, pending_entries_;
+  std::size_t pending_capacity_ = 0, pending_ = 0;
+  int continuation_passes_ = 0;
 };
 
 }  // namespace rsaa

@@ -6,13 +6,44 @@
 //                         uniforms; dynamic coverage's surface rules are this with 2 surfaces
 //                         over 16 samples (core/reference/dynamic_coverage.h)
 //   COVERAGE_DYNCOV_SEED  core/reference/dynamic_coverage.cpp, the seed rules (two slots, evict the farther)
+//
+// Bounded work per invocation: llvmpipe ends every loop of a shader invocation once their
+// iterations together reach 65535 (LP_MAX_TGSI_LOOP_ITERATIONS, shared by all loops and by the
+// pixels shaded together), silently: a long list replayed in one invocation lost its fragments
+// and came out as the background. So the first pass resolves the lists of up to SORT_SLOTS
+// records, which it sorts locally; a longer list becomes a pending entry (its technique state,
+// CoverageListTechnique::render) and the continuation passes (COVERAGE_CONTINUE, fullscreen
+// too: long lists come in clusters, which then share SIMD lanes) resume it: each walks at most
+// SCAN_PER_PASS records, keeping the SORT_SLOTS smallest primitive orders above the last one
+// replayed in a max-heap; a finished walk replays them in order, and another walk starts while
+// the pass has rounds left. Any length, bounded per pass.
 #include "coverage_record.glsl"
 
 layout(r32ui) uniform readonly uimage2D u_heads;
 uniform vec3 u_background;  // linear clear colour
 out vec4 o_colour;
 
-const int SORT_SLOTS = 32;  // lists up to this length are sorted locally; longer ones are scanned
+const int SORT_SLOTS = 32;  // lists up to this length are sorted locally; longer ones are pending
+// A continuation pass runs at most ROUNDS_PER_PASS rounds, each a walk of at most SCAN_PER_PASS
+// records (1 + log2(SORT_SLOTS) loop iterations a record) and, once a walk ends, the replay of
+// SORT_SLOTS records (up to ~400 loop iterations each, in insert_fragment). The pixels shaded
+// together share the limit and may be in different rounds: the bound is per round, about
+// 2 x (6 x 1024 + 32 x 400) = 38000 of 65535.
+const uint SCAN_PER_PASS = 1024u;
+const int ROUNDS_PER_PASS = 2;
+
+// Pending entries (long lists), PENDING_UINTS uints each (u_pending_index gives a pixel's
+// entry + 1, 0 for none): 0 unused,
+// 1 flags (1 started, 2 done), 2 last primitive order replayed, 3 cursor (next record to walk),
+// 4 heap size, then the heap's keys and record indices, then the technique's state (save_state).
+layout(std430, binding = 2) coherent buffer CoveragePendingCounter {
+  uint pending_used;
+  uint pending_capacity;
+  uint pending_active;  // entries not done after a continuation pass
+};
+layout(std430, binding = 3) coherent buffer CoveragePending { uint coverage_pending[]; };
+const uint PENDING_UINTS = 128u;  // CoverageListTechnique::kPendingUints
+const uint PENDING_STATE = 5u + 2u * uint(SORT_SLOTS);
 
 #ifdef COVERAGE_DCAA
 uniform float u_cos_normal_threshold;
@@ -163,6 +194,35 @@ void insert_fragment(CoverageRecord r) {
   for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
 }
 
+#if 1 + 11 * DCAA_MAX_SURFACES + 5 + 2 * 32 > 128
+#error "DCAA_MAX_SURFACES: the pending entry holds at most 5 surfaces"
+#endif
+void save_state(uint b) {
+  coverage_pending[b] = uint(s_count);
+  for (int i = 0; i < s_count; ++i) {
+    uint o = b + 1u + 11u * uint(i);
+    coverage_pending[o + 0u] = s_coverage[i].x;
+    coverage_pending[o + 1u] = s_coverage[i].y;
+    for (int c = 0; c < 3; ++c) {
+      coverage_pending[o + 2u + uint(c)] = floatBitsToUint(s_depth[i][c]);
+      coverage_pending[o + 5u + uint(c)] = floatBitsToUint(s_normal[i][c]);
+      coverage_pending[o + 8u + uint(c)] = floatBitsToUint(s_colour[i][c]);
+    }
+  }
+}
+void load_state(uint b) {
+  s_count = int(coverage_pending[b]);
+  for (int i = 0; i < s_count; ++i) {
+    uint o = b + 1u + 11u * uint(i);
+    s_coverage[i] = uvec2(coverage_pending[o + 0u], coverage_pending[o + 1u]);
+    for (int c = 0; c < 3; ++c) {
+      s_depth[i][c] = uintBitsToFloat(coverage_pending[o + 2u + uint(c)]);
+      s_normal[i][c] = uintBitsToFloat(coverage_pending[o + 5u + uint(c)]);
+      s_colour[i][c] = uintBitsToFloat(coverage_pending[o + 8u + uint(c)]);
+    }
+  }
+}
+
 vec3 resolve_pixel() {
   int counts[MAX_SURFACES + 1];
   front_counts(s_count, counts);
@@ -193,6 +253,23 @@ void insert_fragment(CoverageRecord r) {
   slot_mask[slot] = incoming;
 }
 
+void save_state(uint b) {
+  for (int i = 0; i < 2; ++i) {
+    uint o = b + 5u * uint(i);
+    for (int c = 0; c < 3; ++c) coverage_pending[o + uint(c)] = floatBitsToUint(slot_colour[i][c]);
+    coverage_pending[o + 3u] = floatBitsToUint(slot_depth[i]);
+    coverage_pending[o + 4u] = slot_mask[i];
+  }
+}
+void load_state(uint b) {
+  for (int i = 0; i < 2; ++i) {
+    uint o = b + 5u * uint(i);
+    for (int c = 0; c < 3; ++c) slot_colour[i][c] = uintBitsToFloat(coverage_pending[o + uint(c)]);
+    slot_depth[i] = uintBitsToFloat(coverage_pending[o + 3u]);
+    slot_mask[i] = coverage_pending[o + 4u];
+  }
+}
+
 vec3 resolve_pixel() {
   int near = slot_depth[0] < slot_depth[1] ? 0 : 1, far = 1 - near;
   float total = float(bitCount(slot_mask[0] | slot_mask[1]));
@@ -202,12 +279,122 @@ vec3 resolve_pixel() {
 }
 #endif  // COVERAGE_DYNCOV_SEED
 
-void main() {
+// The continuation passes' selection: a max-heap of the SORT_SLOTS smallest keys offered.
+uint h_keys[SORT_SLOTS], h_indices[SORT_SLOTS];
+int h_size = 0;
+
+// Puts (key, index) into the heap of `size` entries at `root`, moving larger children up.
+void sift_down(int root, int size, uint key, uint index) {
+  int i = root;
+  for (;;) {  // at most log2(SORT_SLOTS) iterations
+    int c = 2 * i + 1;
+    if (c >= size) break;
+    if (c + 1 < size && h_keys[c + 1] > h_keys[c]) ++c;
+    if (h_keys[c] <= key) break;
+    h_keys[i] = h_keys[c];
+    h_indices[i] = h_indices[c];
+    i = c;
+  }
+  h_keys[i] = key;
+  h_indices[i] = index;
+}
+
+void heap_offer(uint key, uint index) {
+  if (h_size < SORT_SLOTS) {
+    int i = h_size++;
+    while (i > 0 && h_keys[(i - 1) / 2] < key) {
+      h_keys[i] = h_keys[(i - 1) / 2];
+      h_indices[i] = h_indices[(i - 1) / 2];
+      i = (i - 1) / 2;
+    }
+    h_keys[i] = key;
+    h_indices[i] = index;
+  } else if (key < h_keys[0]) {
+    sift_down(0, SORT_SLOTS, key, index);
+  }
+}
+
+// Sorts the heap ascending in place.
+void heap_sort() {
+  for (int end = h_size - 1; end > 0; --end) {
+    uint key = h_keys[end], index = h_indices[end];
+    h_keys[end] = h_keys[0];
+    h_indices[end] = h_indices[0];
+    sift_down(0, end, key, index);
+  }
+}
+
+void init_state() {
 #ifdef COVERAGE_DYNCOV_SEED
   slot_colour[0] = slot_colour[1] = u_background;
   slot_depth[0] = slot_depth[1] = 1.0;
   slot_mask[0] = slot_mask[1] = 0xffffu;
 #endif
+}
+
+#ifdef COVERAGE_CONTINUE
+layout(r32ui) uniform readonly uimage2D u_pending_index;
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  uint entry = imageLoad(u_pending_index, pixel).x;
+  if (entry == 0u) discard;
+  uint b = (entry - 1u) * PENDING_UINTS;
+  uint flags = coverage_pending[b + 1u];
+  if ((flags & 2u) != 0u) discard;
+  uint head = imageLoad(u_heads, pixel).x;
+  uint capacity = coverage_record_capacity;
+  uint last = coverage_pending[b + 2u], cursor = coverage_pending[b + 3u];
+  bool started = (flags & 1u) != 0u;
+  h_size = int(coverage_pending[b + 4u]);
+  for (int k = 0; k < h_size; ++k) {
+    h_keys[k] = coverage_pending[b + 5u + uint(k)];
+    h_indices[k] = coverage_pending[b + 5u + uint(SORT_SLOTS + k)];
+  }
+  load_state(b + PENDING_STATE);
+  bool done = false;
+  for (int round = 0; round < ROUNDS_PER_PASS; ++round) {
+    for (uint walked = 0u; walked < SCAN_PER_PASS && cursor != COVERAGE_LIST_END && cursor < capacity; ++walked) {
+      uint key = coverage_records[cursor * COVERAGE_RECORD_UINTS + 1u];
+      if (!started || key > last) heap_offer(key, cursor);
+      cursor = coverage_records[cursor * COVERAGE_RECORD_UINTS];
+    }
+    if (cursor != COVERAGE_LIST_END && cursor < capacity) break;  // the walk goes on next pass
+    // A whole walk: its heap holds the next records in primitive order.
+    heap_sort();
+    for (int k = 0; k < h_size; ++k) insert_fragment(coverage_load(h_indices[k]));
+    if (h_size > 0) {
+      last = h_keys[h_size - 1];
+      started = true;
+    }
+    done = h_size < SORT_SLOTS;  // fewer than asked for: none are left
+    h_size = 0;
+    cursor = head;
+    if (done) break;
+  }
+  if (done) {
+    coverage_pending[b + 1u] = 2u;
+    o_colour = vec4(resolve_pixel(), 1.0);
+    return;
+  }
+  coverage_pending[b + 1u] = started ? 1u : 0u;
+  coverage_pending[b + 2u] = last;
+  coverage_pending[b + 3u] = cursor;
+  coverage_pending[b + 4u] = uint(h_size);
+  for (int k = 0; k < h_size; ++k) {
+    coverage_pending[b + 5u + uint(k)] = h_keys[k];
+    coverage_pending[b + 5u + uint(SORT_SLOTS + k)] = h_indices[k];
+  }
+  save_state(b + PENDING_STATE);
+  atomicAdd(pending_active, 1u);
+  discard;
+}
+
+#else
+layout(r32ui) uniform writeonly uimage2D u_pending_index;  // cleared to 0; entry + 1
+
+void main() {
+  init_state();
   uint head = imageLoad(u_heads, ivec2(gl_FragCoord.xy)).x;
   uint capacity = coverage_record_capacity;
   // Gather up to SORT_SLOTS records and sort them by primitive order.
@@ -228,26 +415,22 @@ void main() {
     keys[k] = key;
     indices[k] = i;
   }
-  if (!longer) {
-    for (int k = 0; k < n; ++k) insert_fragment(coverage_load(indices[k]));
-  } else {
-    // Long list: take the next primitive in order by scanning (O(n^2), rare).
-    bool started = false;
-    uint last = 0u;
-    for (;;) {
-      uint best = COVERAGE_LIST_END, best_key = 0u;
-      for (uint i = head; i != COVERAGE_LIST_END && i < capacity; i = coverage_records[i * COVERAGE_RECORD_UINTS]) {
-        uint key = coverage_records[i * COVERAGE_RECORD_UINTS + 1u];
-        if ((!started || key > last) && (best == COVERAGE_LIST_END || key < best_key)) {
-          best = i;
-          best_key = key;
-        }
-      }
-      if (best == COVERAGE_LIST_END) break;
-      insert_fragment(coverage_load(best));
-      started = true;
-      last = best_key;
+  if (longer) {
+    // A long list: a pending entry for the continuation passes, which write this pixel (if the
+    // entries overflow, the host grows them and draws this pass again).
+    uint e = atomicAdd(pending_used, 1u);
+    if (e < pending_capacity) {
+      uint b = e * PENDING_UINTS;
+      imageStore(u_pending_index, ivec2(gl_FragCoord.xy), uvec4(e + 1u));
+      coverage_pending[b + 1u] = 0u;
+      coverage_pending[b + 2u] = 0u;
+      coverage_pending[b + 3u] = head;
+      coverage_pending[b + 4u] = 0u;
+      save_state(b + PENDING_STATE);
     }
+    discard;
   }
+  for (int k = 0; k < n; ++k) insert_fragment(coverage_load(indices[k]));
   o_colour = vec4(resolve_pixel(), 1.0);
 }
+#endif

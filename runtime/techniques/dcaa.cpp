@@ -22,7 +22,7 @@ void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const Dca
 
 std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, int width, int height) {
   auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height, z_prepass);
-  configure_surface_resolve(t->resolve_program(), t->coverage_lists()->lut().pattern(), settings);
+  for (GLuint p : t->resolve_programs()) configure_surface_resolve(p, t->coverage_lists()->lut().pattern(), settings);
   return t;
 }
 

@@ -16,7 +16,7 @@ std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, boo
   auto t = std::make_unique<CoverageListTechnique>(
       dynamic_coverage_pattern(), "COVERAGE_DCAA\n#define DCAA_MAX_SURFACES " + std::to_string(settings.max_surfaces),
       width, height, z_prepass);
-  configure_surface_resolve(t->resolve_program(), dynamic_coverage_pattern(), settings);
+  for (GLuint p : t->resolve_programs()) configure_surface_resolve(p, dynamic_coverage_pattern(), settings);
   return t;
 }
 
