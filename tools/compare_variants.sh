@@ -37,16 +37,20 @@ echo "| technique | PSNR dB | gain over noaa | SSIM | luma error > 1/64 | frame 
 echo "| --- | --- | --- | --- | --- | --- | --- |"
 for t in "${techniques[@]}"; do
   file=$(file_of "$t")
+  # Every step says what failed (a failing command substitution would end the script silently).
   # shellcheck disable=SC2086
-  log=$($rsaa render --scene "$scene" --technique $t --width "$width" --height "$height" --out "$file")
-  label=$(echo "$log" | head -1 | cut -d: -f1)
-  ms=$(echo "$log" | awk '/GL timer query/ {sum += $2} END {printf "%.1f", sum}')
-  bytes=$(echo "$log" | awk '/bytes\/pixel/ {print $2}')
-  read -r psnr ssim luma < <($rsaa compare "$file" "$out/reference.png" | awk 'NR == 2 {print $2, $5, $10}')
+  log=$($rsaa render --scene "$scene" --technique $t --width "$width" --height "$height" --out "$file") ||
+    { echo "compare_variants: rsaa render --technique $t failed (exit $?)" >&2; exit 1; }
+  label=${log%%:*}
+  ms=$(awk '/GL timer query/ {sum += $2} END {printf "%.1f", sum}' <<<"$log")
+  bytes=$(awk '/bytes\/pixel/ {print $2}' <<<"$log")
+  comparison=$($rsaa compare "$file" "$out/reference.png") ||
+    { echo "compare_variants: rsaa compare $file failed (exit $?)" >&2; exit 1; }
+  read -r psnr ssim luma <<<"$(awk 'NR == 2 {print $2, $5, $10}' <<<"$comparison")"
   luma=${luma%\%}
   [ -n "$noaa_psnr" ] || { noaa_psnr=$psnr; noaa_ms=$ms; }
   gain=$(awk -v a="$psnr" -v b="$noaa_psnr" 'BEGIN {printf "%+.2f", a - b}')
-  ratio=$(awk -v a="$ms" -v b="$noaa_ms" 'BEGIN {printf "%.2f", a / b}')
+  ratio=$(awk -v a="$ms" -v b="$noaa_ms" 'BEGIN {if (b > 0) printf "%.2f", a / b; else printf "-"}')
   echo "| $label | $psnr | $gain | $ssim | $luma% | $ms ($ratio) | $bytes |"
 done
 } | tee "$out/table.md"
