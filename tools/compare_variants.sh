@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders the references, all 12 RSAA variants of the paper and RSAA's default (sadp-plane) of a scene and compares each with 64x SSAA
+# Renders the references, all 12 RSAA variants of the paper and RSAA's defaults of a scene and compares each with 64x SSAA
 # (rsaa compare). Prints a Markdown table and keeps the images in OUT_DIR.
 # Usage: tools/compare_variants.sh [SCENE] [WIDTH] [HEIGHT] [OUT_DIR]
 set -euo pipefail
@@ -16,16 +16,20 @@ rsaa=./build/rsaa
 techniques=(
   "noaa" "msaa --samples 4" "ssaa --samples 8" "ssaa --samples 16" "dyncov" "dcaa" "agaa --samples 4" "agaa --samples 8"
 )
+# The paper's variants: its split and its single fetch (ours are the defaults).
+paper="--split-cap 0 --multi-surface fetch"
 for samples in 4 8; do
   for similarity in sadp depth; do
     for auth in 0 1 2; do
-      techniques+=("rsaa --samples $samples --similarity $similarity --auth $auth")
+      techniques+=("rsaa --samples $samples --similarity $similarity --auth $auth $paper")
     done
   done
-  techniques+=("rsaa --samples $samples --similarity sadp-plane --auth 0")  # the default
+  techniques+=("rsaa --samples $samples")  # the defaults: sadp-plane, auth 0, split cap, multi-surface
 done
 
-file_of() { echo "$out/$(echo "$1" | sed 's/--samples /x/; s/--similarity //; s/--auth /auth/; s/ //g').png"; }
+file_of() {
+  echo "$out/$(echo "$1" | sed "s/ $paper//; s/--samples /x/; s/--similarity //; s/--auth /auth/; s/ //g").png"
+}
 
 echo "rendering $scene at ${width}x${height} into $out" >&2
 $rsaa render --scene "$scene" --technique ssaa --samples 64 --width "$width" --height "$height" \
