@@ -84,7 +84,7 @@ for scene in builtin:default "$engine" "$truck"; do
   step "compare variants, $name" "compare-$name.md"
   bash tools/compare_variants.sh "$scene" 640 480 "$out/compare/$name" >"$out/compare-$name.md"
 done
-cp "$out/compare/default/rsaax8sadp-planeauth0.png" docs/images/default_rsaa.png
+cp "$out/compare/default/rsaax8.png" docs/images/default_rsaa.png
 bash tools/crops.sh "$out/compare/default" 100x75+250+40 docs/images/default_crops_star.png
 for scene in builtin:default "$engine" builtin:grazing; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}
