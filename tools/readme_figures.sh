@@ -88,13 +88,14 @@ cp "$out/compare/default/rsaax8.png" docs/images/default_rsaa.png
 bash tools/crops.sh "$out/compare/default" 100x75+250+40 docs/images/default_crops_star.png
 for scene in builtin:default "$engine" builtin:grazing; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}
-  for similarity in sadp sadp-plane; do
-    step "diagnosis, $name, $similarity" "diagnosis/$name-$similarity.md"
-    $rsaa diagnose --scene "$scene" --similarity "$similarity" --out-dir "$out/diagnosis/$name-$similarity" \
-      >"$out/diagnosis/$name-$similarity.md"
-  done
-  for similarity in sadp sadp-plane; do
-    cp "$out/diagnosis/$name-$similarity/error_map.png" "docs/images/diagnosis_${name}_$similarity.png"
+  # Before (the paper's SADP, then sadp-plane, each with the paper's resolve) and after (the defaults).
+  for variant in sadp sadp-plane defaults; do
+    options=(--similarity "$variant" --split-cap 0 --multi-surface fetch)
+    [ "$variant" = defaults ] && options=()
+    step "diagnosis, $name, $variant" "diagnosis/$name-$variant.md"
+    $rsaa diagnose --scene "$scene" "${options[@]}" --out-dir "$out/diagnosis/$name-$variant" \
+      >"$out/diagnosis/$name-$variant.md"
+    cp "$out/diagnosis/$name-$variant/error_map.png" "docs/images/diagnosis_${name}_$variant.png"
   done
 done
 step "bench, RSAA against its baselines" bench-rsaa.md
