@@ -148,16 +148,26 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   depth_test_ = glIsEnabled(GL_DEPTH_TEST);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
-  blend_ = glIsEnabled(GL_BLEND);
   scissor_ = glIsEnabled(GL_SCISSOR_TEST);
   sample_shading_ = glIsEnabled(GL_SAMPLE_SHADING);
+  cull_face_ = glIsEnabled(GL_CULL_FACE);
+  rasterizer_discard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
+  glGetIntegerv(GL_POLYGON_MODE, &polygon_mode_);
+  GLint draw_buffers = 1;
+  glGetIntegerv(GL_MAX_DRAW_BUFFERS, &draw_buffers);
+  for (GLuint i = 0; i < GLuint(draw_buffers); ++i) {
+    DrawBufferState d{};
+    d.blend = glIsEnabledi(GL_BLEND, i);
+    glGetBooleani_v(GL_COLOR_WRITEMASK, i, d.colour_mask);
+    draw_buffers_.push_back(d);
+  }
   glGetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &min_sample_shading_);
-  glGetBooleani_v(GL_COLOR_WRITEMASK, 0, colour_mask_);
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
   for (int unit : texture_units) {
-    UnitTextures t{unit, 0, 0, 0};
+    UnitTextures t{unit, 0, 0, 0, 0};
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    glGetIntegerv(GL_SAMPLER_BINDING, &t.sampler);
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &t.texture_2d);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &t.texture_array);
     glGetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &t.texture_multisample);
@@ -179,6 +189,7 @@ SavedState::~SavedState() {
     glBindTexture(GL_TEXTURE_2D, GLuint(t.texture_2d));
     glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(t.texture_array));
     glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, GLuint(t.texture_multisample));
+    glBindSampler(GLuint(t.unit), GLuint(t.sampler));
   }
   glActiveTexture(GLenum(active_texture_));
   for (const UniformBuffer& u : uniform_buffers_) {
@@ -189,11 +200,17 @@ SavedState::~SavedState() {
       glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(u.binding), GLuint(u.buffer));
   }
   glBindVertexArray(GLuint(vertex_array_));
-  blend_ ? glEnable(GL_BLEND) : glDisable(GL_BLEND);
+  for (GLuint i = 0; i < GLuint(draw_buffers_.size()); ++i) {
+    const DrawBufferState& d = draw_buffers_[i];
+    d.blend ? glEnablei(GL_BLEND, i) : glDisablei(GL_BLEND, i);
+    glColorMaski(i, d.colour_mask[0], d.colour_mask[1], d.colour_mask[2], d.colour_mask[3]);
+  }
+  cull_face_ ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
+  rasterizer_discard_ ? glEnable(GL_RASTERIZER_DISCARD) : glDisable(GL_RASTERIZER_DISCARD);
+  glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_));
   scissor_ ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
   sample_shading_ ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);
   glMinSampleShading(min_sample_shading_);
-  glColorMaski(0, colour_mask_[0], colour_mask_[1], colour_mask_[2], colour_mask_[3]);
   glDepthFunc(GLenum(depth_func_));
   glDepthMask(depth_mask_);
   depth_test_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
@@ -205,6 +222,9 @@ SavedState::~SavedState() {
 
 void set_pass_state(bool depth_test) {
   glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glDisable(GL_BLEND);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);

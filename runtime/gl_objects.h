@@ -87,9 +87,10 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
 namespace rsaa::gl {
 
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
-// bindings, viewport, current program, depth test/function/mask, blending, scissor test, colour
-// mask 0, sample shading, the vertex array, textures and uniform buffers (below). So that a pass
-// dropped into an engine leaves the engine's state as it found it.
+// bindings, viewport, current program, depth test/function/mask, blending and colour mask of
+// every draw buffer, scissor test, face culling, polygon mode, rasterizer discard, sample
+// shading, the vertex array, textures and sampler objects, uniform buffers (below). So that a
+// pass dropped into an engine leaves the engine's state as it found it.
 class SavedState {
  public:
   // Also saves the 2D, 2D-array and 2D-multisample textures bound to `texture_units` and the
@@ -102,7 +103,11 @@ class SavedState {
  private:
   struct UnitTextures {
     int unit;
-    GLint texture_2d, texture_array, texture_multisample;
+    GLint texture_2d, texture_array, texture_multisample, sampler;
+  };
+  struct DrawBufferState {
+    GLboolean blend;
+    GLboolean colour_mask[4];
   };
   struct UniformBuffer {
     int binding;
@@ -110,17 +115,19 @@ class SavedState {
     GLint64 start, size;
   };
   GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, viewport_[4] = {}, program_ = 0;
-  GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, blend_ = GL_FALSE, scissor_ = GL_FALSE;
-  GLboolean sample_shading_ = GL_FALSE;
+  GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, scissor_ = GL_FALSE;
+  GLboolean sample_shading_ = GL_FALSE, cull_face_ = GL_FALSE, rasterizer_discard_ = GL_FALSE;
+  GLint polygon_mode_ = GL_FILL;
   GLfloat min_sample_shading_ = 0.0f;
-  GLboolean colour_mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;
   std::vector<UnitTextures> textures_;
+  std::vector<DrawBufferState> draw_buffers_;  // blending and colour mask of every draw buffer
   std::vector<UniformBuffer> uniform_buffers_;
 };
 
 // The state a pass draws with, whatever the engine left: clears and writes reach every pixel
-// (no scissor, all masks on), no blending, depth test on (GL_LESS) or off.
+// (no scissor, all masks on, no culling, filled polygons, no rasterizer discard), no blending,
+// depth test on (GL_LESS) or off.
 void set_pass_state(bool depth_test);
 
 // Throws std::invalid_argument naming `what` unless `texture` is an existing 2D texture of

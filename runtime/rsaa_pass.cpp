@@ -36,7 +36,7 @@ struct RsaaPass::Objects {
   gl::Texture codes_ms2;
   gl::Framebuffer multisample_target2;
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
-  gl::Buffer uniforms;  // RsaaUniformBlock
+  gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
   gl::Program subsample_program, post_program;
   gl::CachedFramebuffer resolve_target;
 };
@@ -190,6 +190,23 @@ void validate_frame(const RsaaFrame& frame, int width, int height) {
   gl::require_texture(frame.centre_primitive, GL_R32UI, width, height, "RsaaFrame::centre_primitive");
   gl::require_texture(frame.centre_depth, GL_DEPTH_COMPONENT32F, width, height,
                       "RsaaFrame::centre_depth");
+  // The one bilinear fetch needs the colour filtered linearly (it is read at scale 1).
+  GLint filter = 0;
+  glGetTextureParameteriv(frame.colour, GL_TEXTURE_MAG_FILTER, &filter);
+  if (filter != GL_LINEAR)
+    throw std::invalid_argument("RsaaFrame::colour must have GL_TEXTURE_MAG_FILTER GL_LINEAR (the resampling "
+                                "fetch is bilinear); it has 0x" + [&] {
+                                  char hex[16];
+                                  std::snprintf(hex, sizeof hex, "%04X", unsigned(filter));
+                                  return std::string(hex);
+                                }());
+  // Depth is read as OpenGL's default convention: clip z in [-w, w], window depth 0 near .. 1 far.
+  GLint origin = 0, depth_mode = 0;
+  glGetIntegerv(GL_CLIP_ORIGIN, &origin);
+  glGetIntegerv(GL_CLIP_DEPTH_MODE, &depth_mode);
+  if (origin != GL_LOWER_LEFT || depth_mode != GL_NEGATIVE_ONE_TO_ONE)
+    throw std::invalid_argument("the RSAA pass needs glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE), "
+                                "OpenGL's default: its depth reconstruction and pre-pass depth test assume it");
 }
 
 // The outside pixel of each subsample, converted to window space (+y up).
@@ -461,6 +478,14 @@ void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const 
       throw std::logic_error("RSAA pre-pass: the engine's program " + std::to_string(current) +
                              " has no RsaaUniforms block: its stages must include RsaaPass::prepass_glsl() "
                              "and call rsaa_jitter() and rsaa_prepass_code()");
+    GLint block_binding = -1;
+    glGetActiveUniformBlockiv(GLuint(current),
+                              glGetProgramResourceIndex(GLuint(current), GL_UNIFORM_BLOCK, "RsaaUniforms"),
+                              GL_UNIFORM_BLOCK_BINDING, &block_binding);
+    if (block_binding != settings_.uniform_binding)
+      throw std::logic_error("RSAA pre-pass: the engine's program reads RsaaUniforms at binding " +
+                             std::to_string(block_binding) + ", not " + std::to_string(settings_.uniform_binding) +
+                             " (RsaaSettings::uniform_binding; do not call glUniformBlockBinding on it)");
     GLint bound = 0;
     glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, GLuint(settings_.uniform_binding), &bound);
     if (GLuint(bound) != gl_->uniforms.get())
@@ -492,6 +517,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   }
   const GLuint fb = gl_->resolve_target.get(targets);
   write_frame_uniforms(frame);
+  glBindSamplers(0, kPostUnits, nullptr);  // the textures' own filtering (an engine's sampler objects are restored)
   glBindTextureUnit(kColourUnit, frame.colour);
   glBindTextureUnit(kNormalUnit, frame.centre_normal);
   glBindTextureUnit(kDepthUnit, frame.centre_depth);

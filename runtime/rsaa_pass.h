@@ -16,8 +16,13 @@
 //   centre_depth      GL_DEPTH_COMPONENT32F, the depth of the same draw
 // rsaa_encode_normal() is in shaders/rsaa_common.glsl (installed in share/rsaa/shaders);
 // RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
-// and resolve() check the four (name, format, size) and throw std::invalid_argument naming the
-// field, so a forgotten or wrong binding is an error, not a wrong image.
+// and resolve() check the four (name, format, size, the colour's linear filter) and throw
+// std::invalid_argument naming the field, so a forgotten or wrong binding is an error, not a
+// wrong image.
+//
+// DEPTH CONVENTION. OpenGL's default: glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE), depth
+// range [0, 1], nearer is less (no reverse Z); inverse_projection maps NDC (z = 2 depth - 1) to
+// view space. Another clip control is refused (std::invalid_argument).
 //
 // THE PRE-PASS, WITH THE ENGINE'S OWN SHADERS (render_subsamples_with_own_shaders). The engine
 // compiles a program whose stages begin with `#version 450 core` (or later), then prepass_glsl()
@@ -28,11 +33,14 @@
 // (shaders/rsaa_prepass.glsl documents them; rsaa_face_normal(view_position) gives the face
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
 // frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample;
-// twice for a union pattern). Before each call the pass binds its framebuffer, the viewport, the pre-pass state below, the
-// uniform block at settings.uniform_binding and three textures at units settings.prepass_first_unit
-// to +2; the callback may use any other unit and binding. After each call the pass checks that
-// the current program declares the block and that its units and binding are untouched, and
-// throws std::logic_error naming what is not.
+// twice for a union pattern). Before each call the pass binds its framebuffer, the viewport, the
+// pre-pass state below, the uniform block at settings.uniform_binding and three textures at units
+// settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
+// set culling for its geometry, but must draw with the colour mask, depth test, function and
+// writes and blending the pass set (the codes depend on them; state it changes after drawing is
+// its own business). After each call the pass checks that the current program declares the
+// block at that binding (no glUniformBlockBinding elsewhere) and that its units and buffer are
+// untouched, and throws std::logic_error naming what is not.
 //
 // THE PRE-PASS, WITH THE PASS'S PROGRAM (render_subsamples). The pass calls
 // `draw_geometry(program, jitter_ndc)` with its own program current (render_subsamples() throws
@@ -48,13 +56,16 @@
 //   u_primitive_base (uint)       first primitive id of this draw call as written into
 //                                 centre_primitive (0 for one draw per frame; default 0)
 //
-// The pre-pass state: depth test on (GL_LESS, depth writes on), blending and scissor test off,
-// and for the multisample pre-pass sample shading on.
+// The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling
+// and rasterizer discard off, filled polygons, colour mask: the subsample's channel (jittered) or
+// all (multisample), and for the multisample pre-pass sample shading on.
 //
 // GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
-// program, depth test/function/mask, blending, scissor test, sample shading, colour mask 0, the
-// vertex array, the textures bound to units 0-7 and to the pre-pass's three units, and the uniform
-// buffer binding; the engine's scissor and masks do not reach the pass.
+// program, depth test/function/mask, blending and colour masks of every draw buffer, scissor
+// test, culling, polygon mode, rasterizer discard, sample shading, the vertex array, the
+// textures and sampler objects bound to units 0-7 and to the pre-pass's three units, and the
+// uniform buffer binding; the engine's scissor, masks, culling and samplers do not reach the
+// pass. (A program the engine deleted while current cannot be restored: none is current after.)
 // Textures and programs they create belong to the RsaaPass object.
 #pragma once
 

@@ -6,7 +6,7 @@
 // rsaa_post.frag is the fragment shader around it that RsaaPass runs; an engine may call it from
 // its own pass (a fragment or compute shader) with the same resources bound.
 //
-// Defines expected before inclusion (RsaaPass::post_glsl() writes them for a pass):
+// Defines expected before inclusion (rsaa_shader_defines() in runtime/rsaa_pass.h writes them):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (1 = post-pass authentication), RSAA_CODE_BITS, the similarity
 //   RSAA_PREPASS_MSAA        (optional) codes are the samples of one multisample texture
 //   RSAA_PREPASS_MSAA_UNION  (optional, with RSAA_MS_SAMPLES m) codes of a union pattern: samples
@@ -21,7 +21,7 @@
 //                            table, then the code textures
 //   RSAA_UNIFORM_BINDING     (13) the uniform block (rsaa_uniforms.glsl)
 //
-// The table texture (RGBA32F, 256 x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
+// The table texture (RGBA32F, min(masks, 256) x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
 // offset in GL window space (+y up) and the mask's representative dissimilar subsample (post-pass
 // authentication). Codes arrive packed, four subsamples per RGBA texel: subsample i is channel
 // i % 4 of code texture i / 4; or, from the multisample pre-pass, sample i of one texture.

@@ -1,5 +1,6 @@
 // The one uniform block of the RSAA pass, read by the pre-pass and the post-process. RsaaPass
-// fills it (runtime/rsaa_pass.cpp, struct RsaaUniformBlock, the same std140 layout) and binds it
+// fills it (runtime/rsaa_pass.cpp, struct RsaaUniformHead and the per-subsample entries, the
+// same std140 layout) and binds it
 // at RSAA_UNIFORM_BINDING before it calls the engine's draw or runs the post-process; an engine
 // using these shaders without the runtime fills it itself.
 //
@@ -22,7 +23,10 @@ layout(std140, binding = RSAA_UNIFORM_BINDING) uniform RsaaUniforms {
   // Multisample pre-pass: the offset from a sample's raster position to the point it sees, window
   // space (the second draw of a union pattern is shifted); 0 otherwise.
   vec2 rsaa_sample_shift;
-  // .xy: the step from a pixel to the outside pixel nearest subsample i, window space (+y up);
+  // .xy: the step from a pixel to the outside pixel nearest subsample i, window space (+y up):
+  // the subsample's pixel-space position (+y down) divided by its larger absolute coordinate,
+  // each coordinate rounded half away from zero, then y negated (core's outside_pixel_towards;
+  // (1, 0) for a subsample at the centre);
   // .zw, union pattern, shifted subsamples: the raster pixel whose sample saw subsample i of a
   // pixel, relative to that pixel (window space).
   ivec4 rsaa_neighbours[RSAA_SAMPLE_COUNT];

@@ -233,6 +233,19 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glBindBufferRange(GL_UNIFORM_BUFFER, 13, engine_buffer.get(), 0, 128);  // the pass's binding
   glEnable(GL_SAMPLE_SHADING);
   glMinSampleShading(0.25f);
+  // ... and the state an engine leaves for its own draws: culling (the full-screen triangle
+  // would vanish), line polygons, a nearest-filtering sampler object on the colour's unit (the
+  // bilinear fetch would turn nearest), blending and a closed mask on draw buffer 1.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  GLuint nearest = 0;
+  glCreateSamplers(1, &nearest);
+  glSamplerParameteri(nearest, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(nearest, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindSampler(0, nearest);
+  glEnablei(GL_BLEND, 1);
+  glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
 
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
   const RsaaFrame frame = scene.frame();
@@ -272,13 +285,27 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(uniform_size, 128);
   EXPECT_TRUE(glIsEnabled(GL_SAMPLE_SHADING));
   EXPECT_EQ(min_sample_shading, 0.25f);
+  GLint polygon_mode = 0, sampler = 0;
+  GLboolean mask1[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+  glGetIntegerv(GL_POLYGON_MODE, &polygon_mode);
+  glGetIntegeri_v(GL_SAMPLER_BINDING, 0, &sampler);
+  glGetBooleani_v(GL_COLOR_WRITEMASK, 1, mask1);
+  EXPECT_TRUE(glIsEnabled(GL_CULL_FACE));
+  EXPECT_EQ(polygon_mode, GL_LINE);
+  EXPECT_EQ(GLuint(sampler), nearest);
+  EXPECT_TRUE(glIsEnabledi(GL_BLEND, 1));
+  EXPECT_FALSE(mask1[0] || mask1[1] || mask1[2] || mask1[3]);
 
-  // The engine's scissor and masks did not reach the pass: the same frame without them gives
-  // the same image.
+  // The engine's state did not reach the pass: the same frame without it gives the same image.
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDisable(GL_SAMPLE_SHADING);
+  glDisable(GL_CULL_FACE);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glBindSampler(0, 0);
+  glDeleteSamplers(1, &nearest);
+  glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   const gl::Texture clean_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   scene.render_subsamples(pass);
   pass.resolve(frame, clean_output.get());
@@ -291,7 +318,39 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
       differing += p.r != q.r || p.g != q.g || p.b != q.b;
     }
   EXPECT_EQ(differing, 0);
+  // ... and it resampled: the comparison says something.
+  const Image one_x = read_back_image(frame.colour, kWidth, kHeight);
+  int resampled = 0;
+  for (std::size_t p = 0; p < a.pixels.size(); ++p) resampled += a.pixels[p].r != one_x.pixels[p].r;
+  EXPECT_GT(resampled, 20);
   gl::check("state test");
+}
+
+// What an engine can get wrong without a GL error is refused: a colour texture without linear
+// filtering, a depth convention other than OpenGL's default, a program whose RsaaUniforms block
+// was moved to another binding.
+TEST_F(RsaaPassApi, NearestColourOtherClipControlOrAMovedBlockAreRefused) {
+  const test::SceneFrame scene("builtin:edges", kWidth, kHeight);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  RsaaFrame frame = scene.frame();
+  const gl::Texture nearest_colour = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight, GL_NEAREST);
+  RsaaFrame nearest = frame;
+  nearest.colour = nearest_colour.get();
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  EXPECT_NE(invalid_argument_of([&] { pass.resolve(nearest, output.get()); }).find("GL_TEXTURE_MAG_FILTER"),
+            std::string::npos);
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  EXPECT_NE(invalid_argument_of([&] { pass.resolve(frame, output.get()); }).find("glClipControl"), std::string::npos);
+  glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+  const gl::Program engine = engine_prepass_program(pass);
+  glUniformBlockBinding(engine.get(), glGetUniformBlockIndex(engine.get(), "RsaaUniforms"), 5);
+  try {
+    pass.render_subsamples_with_own_shaders(frame, [&] { glUseProgram(engine.get()); });
+    ADD_FAILURE() << "a moved block was accepted";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("reads RsaaUniforms at binding 5"), std::string::npos) << e.what();
+  }
+  gl::check("after the refusals");
 }
 
 }  // namespace

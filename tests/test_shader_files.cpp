@@ -134,6 +134,10 @@ TEST(HlslPostProcess, CompilesForEveryTableAndOption) {
         }
   }
   std::string log;
+  // Registers overridden one at a time.
+  EXPECT_TRUE(compile_hlsl_post(dir, "d3d8x", "-DRSAA_SAMPLE_COUNT=8 -DRSAA_REGISTER_CONSTANTS=b1 -DRSAA_REGISTER_COLOUR=t8",
+                                dir.file("post.spv"), log))
+      << log;
   EXPECT_FALSE(compile_hlsl_post(dir, "d3d4x", "-DRSAA_SAMPLE_COUNT=8", dir.file("post.spv"), log)) << "a table of 4 for 8 samples";
   EXPECT_NE(log.find("another sample count"), std::string::npos) << log;
 }
