@@ -160,6 +160,45 @@ void expect_same_resampled_image(GLuint expected_texture, GLuint actual_texture,
   EXPECT_EQ(differing, 0) << "of " << resampled << " resampled pixels";
 }
 
+// The default scene resolved by RsaaPass with `settings` (the image the shader files must give).
+struct ResolvedScene {
+  ResolvedScene(const RsaaSettings& settings, int width, int height)
+      : scene("builtin:default", width, height),
+        pass(settings, width, height),
+        frame(scene.frame()),
+        output(gl::make_texture_2d(GL_RGBA16F, width, height)) {
+    scene.render_subsamples(pass);
+    pass.resolve(frame, output.get());
+  }
+  test::SceneFrame scene;
+  RsaaPass pass;
+  RsaaFrame frame;
+  gl::Texture output;
+};
+
+// A buffer holding `bytes` of `data` (a uniform block).
+gl::Buffer buffer_of(const void* data, std::size_t bytes) {
+  GLuint b = 0;
+  glCreateBuffers(1, &b);
+  glNamedBufferStorage(b, GLsizeiptr(bytes), data, 0);
+  return gl::Buffer(b);
+}
+
+// `program` drawn over a width x height RGBA16F target with `textures` bound from unit 0.
+gl::Texture draw_post_process(GLuint program, const std::vector<GLuint>& textures, int width, int height,
+                              const char* what) {
+  glBindTextures(0, GLsizei(textures.size()), textures.data());
+  gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+  const gl::Framebuffer target = gl::make_framebuffer({{output.get()}});
+  glBindFramebuffer(GL_FRAMEBUFFER, target.get());
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(program);
+  draw_fullscreen_triangle();
+  gl::check(what);
+  return output;
+}
+
 // A copy of a texture upside down (rows from the top, as Direct3D stores an image).
 gl::Texture upside_down(GLuint texture, GLenum format, int width, int height, GLenum filter = GL_NEAREST) {
   gl::Texture copy = gl::make_texture_2d(format, width, height, filter);
@@ -193,13 +232,9 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
     settings.multi_surface = "neighbours";
     extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS";
   }
-  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
-  const View& view = scene.view;
-  RsaaPass pass(settings, kWidth, kHeight);
-  const RsaaFrame frame = scene.frame();
-  scene.render_subsamples(pass);
-  const gl::Texture glsl_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
-  pass.resolve(frame, glsl_output.get());
+  const ResolvedScene resolved(settings, kWidth, kHeight);
+  const View& view = resolved.scene.view;
+  const RsaaFrame& frame = resolved.frame;
 
   test::TempDir dir;
   std::string log;
@@ -220,7 +255,7 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   const GLuint p = program.get();
   GLint uniforms = 0;
   glGetProgramInterfaceiv(p, GL_UNIFORM, GL_ACTIVE_RESOURCES, &uniforms);
-  const std::vector<GlName> codes = pass.code_textures();
+  const std::vector<GlName> codes = resolved.pass.code_textures();
   ASSERT_EQ(codes.size(), 2u);
   for (GLint u = 0; u < uniforms; ++u) {
     char name[256];
@@ -252,30 +287,18 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   std::copy_n(glm::value_ptr(inverse), 16, constants.inverse_projection);
   constants.viewport[0] = kWidth, constants.viewport[1] = kHeight;
   constants.threshold = settings.threshold;
-  gl::Buffer buffer = [&] {
-    GLuint b = 0;
-    glCreateBuffers(1, &b);
-    glNamedBufferStorage(b, sizeof constants, &constants, 0);
-    return gl::Buffer(b);
-  }();
+  const gl::Buffer buffer = buffer_of(&constants, sizeof constants);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, buffer.get());
   const gl::Texture colour = upside_down(frame.colour, GL_RGBA16F, kWidth, kHeight, GL_LINEAR);
   const gl::Texture normal = upside_down(frame.centre_normal, GL_RG16UI, kWidth, kHeight);
   const gl::Texture depth = upside_down(frame.centre_depth, GL_DEPTH_COMPONENT32F, kWidth, kHeight);
   const gl::Texture codes0 = upside_down(codes[0], GL_RGBA8UI, kWidth, kHeight);
   const gl::Texture codes1 = upside_down(codes[1], GL_RGBA8UI, kWidth, kHeight);
-  const GLuint textures[6] = {colour.get(), normal.get(), depth.get(), 0, codes0.get(), codes1.get()};
-  glBindTextures(0, 6, textures);
-  const gl::Texture hlsl_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
-  const gl::Framebuffer target = gl::make_framebuffer({{hlsl_output.get()}});
-  glBindFramebuffer(GL_FRAMEBUFFER, target.get());
-  glViewport(0, 0, kWidth, kHeight);
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(p);
-  draw_fullscreen_triangle();
-  gl::check("the HLSL post-process");
+  const gl::Texture hlsl_output =
+      draw_post_process(p, {colour.get(), normal.get(), depth.get(), 0, codes0.get(), codes1.get()}, kWidth, kHeight,
+                        "the HLSL post-process");
 
-  expect_same_resampled_image(glsl_output.get(), hlsl_output.get(), frame.colour, kWidth, kHeight, true);
+  expect_same_resampled_image(resolved.output.get(), hlsl_output.get(), frame.colour, kWidth, kHeight, true);
 }
 
 INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1, 2));
@@ -347,13 +370,9 @@ TEST_F(GeneratedShadersOnGl, ThePostFragmentWithItsTableInlinedGivesThePassImage
   constexpr int kWidth = 160, kHeight = 120;
   RsaaSettings settings;
   settings.auth = 1;
-  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
-  const View& view = scene.view;
-  RsaaPass pass(settings, kWidth, kHeight);
-  const RsaaFrame frame = scene.frame();
-  scene.render_subsamples(pass);
-  const gl::Texture pass_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
-  pass.resolve(frame, pass_output.get());
+  const ResolvedScene resolved(settings, kWidth, kHeight);
+  const View& view = resolved.scene.view;
+  const RsaaFrame& frame = resolved.frame;
 
   test::TempDir dir;
   const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --auth 1");
@@ -364,37 +383,25 @@ TEST_F(GeneratedShadersOnGl, ThePostFragmentWithItsTableInlinedGivesThePassImage
                                                 {GL_FRAGMENT_SHADER, fragment}},
                                                "", "generated rsaa_post.frag");
   // The block, std140: mat4, viewport, jitter, threshold, subsample, padding, ivec4 per subsample.
-  std::vector<std::int32_t> block(24 + 4 * pass.pattern().size(), 0);
+  std::vector<std::int32_t> block(24 + 4 * resolved.pass.pattern().size(), 0);
   const glm::mat4 inverse = view.inverse_projection();
   std::memcpy(block.data(), glm::value_ptr(inverse), 64);
   const float viewport[2] = {float(kWidth), float(kHeight)};
   std::memcpy(&block[16], viewport, 8);
   std::memcpy(&block[20], &settings.threshold, 4);
-  for (int i = 0; i < pass.pattern().size(); ++i) {
-    const PixelStep step = outside_pixel_towards(pass.pattern().positions[i]);
+  for (int i = 0; i < resolved.pass.pattern().size(); ++i) {
+    const PixelStep step = outside_pixel_towards(resolved.pass.pattern().positions[i]);
     const Vec2 gl_step = pixel_to_gl({double(step.i), double(step.j)});
     block[24 + 4 * i] = int(gl_step.x), block[24 + 4 * i + 1] = int(gl_step.y);
   }
-  gl::Buffer buffer = [&] {
-    GLuint b = 0;
-    glCreateBuffers(1, &b);
-    glNamedBufferStorage(b, GLsizeiptr(block.size() * 4), block.data(), 0);
-    return gl::Buffer(b);
-  }();
+  const gl::Buffer buffer = buffer_of(block.data(), block.size() * 4);
   glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings.uniform_binding), buffer.get());
-  const std::vector<GlName> codes = pass.code_textures();
-  const GLuint textures[6] = {frame.colour, frame.centre_normal, frame.centre_depth, 0, codes[0], codes[1]};
-  glBindTextures(0, 6, textures);
-  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
-  const gl::Framebuffer target = gl::make_framebuffer({{output.get()}});
-  glBindFramebuffer(GL_FRAMEBUFFER, target.get());
-  glViewport(0, 0, kWidth, kHeight);
-  glDisable(GL_DEPTH_TEST);
-  glUseProgram(program.get());
-  draw_fullscreen_triangle();
-  gl::check("the generated post-process");
+  const std::vector<GlName> codes = resolved.pass.code_textures();
+  const gl::Texture output =
+      draw_post_process(program.get(), {frame.colour, frame.centre_normal, frame.centre_depth, 0, codes[0], codes[1]},
+                        kWidth, kHeight, "the generated post-process");
 
-  expect_same_resampled_image(pass_output.get(), output.get(), frame.colour, kWidth, kHeight, false);
+  expect_same_resampled_image(resolved.output.get(), output.get(), frame.colour, kWidth, kHeight, false);
 }
 
 }  // namespace
