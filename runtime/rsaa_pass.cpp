@@ -39,6 +39,9 @@ struct RsaaPass::Objects {
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
   gl::Program subsample_program, post_program;
   gl::CachedFramebuffer resolve_target;
+  // The two-pass post-process (RsaaSettings::post "edges"): depth 0 marks the pixels to resolve.
+  gl::Program edge_program;
+  gl::Texture edge_depth;
 };
 
 namespace {
@@ -318,6 +321,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   gl_->table = table_texture(table);
 
   const int n = pattern_.size();
+  if (settings.post != "edges" && settings.post != "single")
+    throw std::invalid_argument("RSAA post '" + settings.post + "' is not one of edges, single");
   if (settings.prepass != "jittered" && settings.prepass != "msaa")
     throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
   multisample_ = settings.prepass == "msaa" && driver_samples_pattern(pattern_);
@@ -370,6 +375,13 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                         {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
                                        defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
                                        "RSAA post-process");
+  if (settings.post == "edges") {
+    gl_->edge_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                          {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post_edges.frag")}},
+                                         defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
+                                         "RSAA post-process edge pass");
+    gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
+  }
   gl::check("creating the RSAA pass");
 }
 RsaaPass::~RsaaPass() = default;
@@ -515,7 +527,8 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     if (!mask_output) throw std::invalid_argument("RSAA resolve: output_mask set but no mask texture");
     targets.push_back({mask_output});
   }
-  const GLuint fb = gl_->resolve_target.get(targets);
+  const bool edges = settings_.post == "edges";
+  const GLuint fb = gl_->resolve_target.get(targets, {edges ? gl_->edge_depth.get() : 0u});
   write_frame_uniforms(frame);
   glBindSamplers(0, kPostUnits, nullptr);  // the textures' own filtering (an engine's sampler objects are restored)
   glBindTextureUnit(kColourUnit, frame.colour);
@@ -527,6 +540,16 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);
+  if (edges) {
+    // Edge pass: every pixel's kept colour, depth 0 where the mask is not all-similar.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glUseProgram(gl_->edge_program.get());
+    draw_fullscreen_triangle();
+    // Resolve pass at depth 0.5 (the full-screen triangle, depth range [0, 1]): only on depth 0.
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+  }
   glUseProgram(gl_->post_program.get());
   draw_fullscreen_triangle();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -120,6 +120,12 @@ struct RsaaSettings {
   // (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's outermost
   // pixels); on llvmpipe it is slower (per-sample shading), so it is not the default.
   std::string prepass = "jittered";
+  // How resolve() runs the post-process: "edges" (default) in two passes, an edge pass that copies
+  // every pixel's colour and marks in a depth target the pixels whose mask is not all-similar,
+  // then the resolve only there (an early depth test skips the rest: a driver that executes both
+  // sides of a branch for a whole SIMD batch, as Mesa llvmpipe, pays only for edge pixels);
+  // "single": one pass over every pixel. Both give the same image (tests compare them).
+  std::string post = "edges";
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
   // Where the shaders find the pass's resources: the pre-pass's three textures at units
   // prepass_first_unit to +2, the uniform block (shaders/rsaa_uniforms.glsl) at uniform_binding.

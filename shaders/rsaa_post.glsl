@@ -150,7 +150,12 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
 }
 #endif
 
-vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
+// The pixel's similarity mask (paper section 2.2) from its subsamples' codes, with the decoded
+// similarities and the centre's normal that the resolve reads further. The all-similar mask means
+// rsaa_resolve() keeps the pixel's colour: the cheap test an edge pass runs for every pixel
+// (rsaa_post_edges.frag). Most pixels leave early: every subsample on the centre's surface (code 1
+// = similarity 0), or a background pixel whose subsamples see no surface (code 0) or its surface.
+uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out uvec2 centre_normal) {
   uint codes[RSAA_SAMPLE_COUNT];
 #ifndef RSAA_PREPASS_MSAA
   uvec4 code_texels[RSAA_CODE_TEXTURES];
@@ -175,21 +180,25 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
 #endif
     any_different = any_different || codes[i] > 1u;
     any_uncovered = any_uncovered || codes[i] == 0u;
+    similarity[i] = 0.0;
   }
-  vec4 colour = texelFetch(rsaa_colour, pixel, 0);
-  mask = RSAA_ALL_SIMILAR;
-  // Most pixels: every subsample on the centre's surface (code 1 = similarity 0), or a background
-  // pixel whose subsamples see no surface (code 0) or its surface. Their colour stays.
-  if (!any_different && !any_uncovered) return colour;
-  uvec2 centre_normal = texelFetch(rsaa_post_centre_normal, pixel, 0).xy;
+  centre_normal = uvec2(0u);
+  if (!any_different && !any_uncovered) return RSAA_ALL_SIMILAR;
+  centre_normal = texelFetch(rsaa_post_centre_normal, pixel, 0).xy;
   bool centre_is_surface = rsaa_is_surface(centre_normal);
-  if (!any_different && !centre_is_surface) return colour;
-
-  float similarity[RSAA_SAMPLE_COUNT];
+  if (!any_different && !centre_is_surface) return RSAA_ALL_SIMILAR;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) similarity[i] = rsaa_decode_similarity(codes[i], centre_is_surface);
   float split;
-  mask = rsaa_classify(similarity, rsaa_threshold, split);
+  return rsaa_classify(similarity, rsaa_threshold, split);
+}
+
+vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
+  float similarity[RSAA_SAMPLE_COUNT];
+  uvec2 centre_normal;
+  mask = rsaa_pixel_mask(pixel, similarity, centre_normal);
+  vec4 colour = texelFetch(rsaa_colour, pixel, 0);
   if (mask == RSAA_ALL_SIMILAR) return colour;
+  bool centre_is_surface = rsaa_is_surface(centre_normal);
   vec2 offset;
   int representative;
   rsaa_table_entry(mask, offset, representative);

@@ -246,6 +246,10 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glBindSampler(0, nearest);
   glEnablei(GL_BLEND, 1);
   glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  // A depth range and polygon offset that would move the resolve pass's depth-tested triangle.
+  glDepthRange(0.0, 0.0);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(0.0f, -1.0e6f);
 
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
   const RsaaFrame frame = scene.frame();
@@ -295,6 +299,10 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(GLuint(sampler), nearest);
   EXPECT_TRUE(glIsEnabledi(GL_BLEND, 1));
   EXPECT_FALSE(mask1[0] || mask1[1] || mask1[2] || mask1[3]);
+  GLdouble depth_range[2] = {1.0, 1.0};
+  glGetDoublev(GL_DEPTH_RANGE, depth_range);
+  EXPECT_EQ(depth_range[1], 0.0);
+  EXPECT_TRUE(glIsEnabled(GL_POLYGON_OFFSET_FILL));
 
   // The engine's state did not reach the pass: the same frame without it gives the same image.
   glDisable(GL_SCISSOR_TEST);
@@ -306,6 +314,8 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glBindSampler(0, 0);
   glDeleteSamplers(1, &nearest);
   glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthRange(0.0, 1.0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
   const gl::Texture clean_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   scene.render_subsamples(pass);
   pass.resolve(frame, clean_output.get());
@@ -351,6 +361,59 @@ TEST_F(RsaaPassApi, NearestColourOtherClipControlOrAMovedBlockAreRefused) {
     EXPECT_NE(std::string(e.what()).find("reads RsaaUniforms at binding 5"), std::string::npos) << e.what();
   }
   gl::check("after the refusals");
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// The two-pass post-process (an edge pass, then the resolve where it marked a pixel) gives the
+// single pass's image and masks, bit for bit, for the default options and the paper's resolve
+// with each authentication, on scenes with silhouettes, thin parts and many small triangles.
+TEST_F(RsaaPassApi, TheEdgePassGivesTheSinglePassImageAndMasks) {
+  constexpr int width = 160, height = 120;
+  for (const char* scene_name : {"builtin:default", "builtin:fence", "builtin:interpenetrating"}) {
+    const test::SceneFrame scene(scene_name, width, height);
+    std::vector<RsaaSettings> variants = {RsaaSettings{}};
+    for (int auth : {0, 1, 2}) {
+      RsaaSettings paper = test::paper_resolve();
+      paper.auth = auth;
+      variants.push_back(paper);
+    }
+    RsaaSettings depth_4x = RsaaSettings{};
+    depth_4x.pattern = "d3d4x", depth_4x.similarity = "depth";
+    variants.push_back(depth_4x);
+    for (RsaaSettings settings : variants) {
+      settings.output_mask = true;
+      std::vector<Image> images;
+      std::vector<std::vector<std::uint32_t>> masks;
+      for (const char* post : {"single", "edges"}) {
+        settings.post = post;
+        RsaaPass pass(settings, width, height);
+        scene.render_subsamples(pass);
+        const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+        const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+        pass.resolve(scene.frame(), output.get(), mask.get());
+        images.push_back(read_back_image(output.get(), width, height));
+        masks.push_back(read_back_uints(mask.get(), width, height));
+      }
+      const std::uint32_t all_similar = (1u << (settings.pattern == "d3d4x" ? 4 : 8)) - 1u;
+      int edges = 0, differing_colour = 0, differing_mask = 0;
+      for (std::size_t p = 0; p < masks[0].size(); ++p) {
+        edges += masks[0][p] != all_similar;
+        differing_mask += masks[0][p] != masks[1][p];
+        const Rgb a = images[0].pixels[p], b = images[1].pixels[p];
+        differing_colour += a.r != b.r || a.g != b.g || a.b != b.b;
+      }
+      SCOPED_TRACE(std::string(scene_name) + " " + settings.pattern + " " + settings.similarity + " auth " +
+                   std::to_string(settings.auth) + " " + settings.multi_surface);
+      EXPECT_GT(edges, 100);  // the comparison covers resolved pixels
+      EXPECT_EQ(differing_mask, 0);
+      EXPECT_EQ(differing_colour, 0);
+    }
+  }
 }
 
 }  // namespace

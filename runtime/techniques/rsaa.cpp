@@ -71,6 +71,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.prepass = o.prepass;
   s.split_cap = float(o.split_cap);
   s.multi_surface = o.multi_surface;
+  s.post = o.post;
   return s;
 }
 
@@ -97,6 +98,7 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --split-cap must be 0 (the paper's split) or a finite number >= 1");
   if (o.multi_surface != "fetch" && o.multi_surface != "neighbours")
     bad("rsaa --multi-surface must be fetch or neighbours, not '" + o.multi_surface + "'");
+  if (o.post != "edges" && o.post != "single") bad("rsaa --post must be edges or single, not '" + o.post + "'");
 }
 
 // " cap1.5 ms": the resolve's options beyond the paper, when used.
@@ -104,6 +106,7 @@ std::string rsaa_extension_label(const TechniqueOptions& o) {
   std::ostringstream label;
   if (o.split_cap > 0.0) label << " cap" << o.split_cap;
   if (o.multi_surface != "fetch") label << " ms";
+  if (o.post != "edges") label << " " << o.post << "-pass";
   return label.str();
 }
 

@@ -73,6 +73,10 @@ std::vector<TechniqueOptions> default_techniques() {
   multisample.prepass = "msaa";
   list.push_back(multisample);
   list.push_back(rsaa_default_without_extensions());
+  // The defaults' post-process in one pass over every pixel, beside the two-pass one (same image).
+  TechniqueOptions single_pass = technique_options("rsaa", 8);
+  single_pass.post = "single";
+  list.push_back(single_pass);
   return list;
 }
 

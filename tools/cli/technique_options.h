@@ -46,6 +46,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "rsaa (ours): fetch (one bilinear fetch, the paper) | neighbours (pixels whose dissimilar "
                   "subsamples point at two different surfaces: mean over subsamples of the outside pixels' colours)")
       ->capture_default_str();
+  cmd->add_option("--post", o.post,
+                  "rsaa post-process: edges (an edge pass marks the pixels to resolve, the resolve runs only "
+                  "there) | single (one pass over every pixel); the same image")
+      ->capture_default_str();
   cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
       ->check(kWholeNumber);
