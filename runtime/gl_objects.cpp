@@ -85,6 +85,7 @@ const char* stage_name(GLenum stage) {
   switch (stage) {
     case GL_VERTEX_SHADER: return "vertex";
     case GL_GEOMETRY_SHADER: return "geometry";
+    case GL_COMPUTE_SHADER: return "compute";
     case GL_FRAGMENT_SHADER: return "fragment";
     default: return "shader";
   }

@@ -221,7 +221,9 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
 #endif
   // A zero offset keeps the texel exactly (a filtered fetch at the texel centre may not).
   if (offset == vec2(0.0)) return colour;
-  vec4 fetched = texture(rsaa_colour, (vec2(pixel) + 0.5 + offset) / rsaa_viewport);
+  // Level 0, bilinear (the magnification filter) in every stage: implicit derivatives would turn
+  // to the minification filter where neighbouring pixels' offsets differ.
+  vec4 fetched = textureLod(rsaa_colour, (vec2(pixel) + 0.5 + offset) / rsaa_viewport, 0.0);
   // As the CPU reference: a NaN or infinite neighbour never spreads into this pixel.
   return any(isnan(fetched)) || any(isinf(fetched)) ? colour : fetched;
 }

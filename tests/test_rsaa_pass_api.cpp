@@ -369,6 +369,32 @@ TEST_F(RsaaPassApi, NearestColourOtherClipControlOrAMovedBlockAreRefused) {
 namespace rsaa {
 namespace {
 
+// Only the magnification filter matters: the resampling fetch samples level 0 bilinearly whatever
+// the minification filter (implicit derivatives differ where neighbouring offsets differ and would
+// select it), so a colour texture with nearest minification gives the same image.
+TEST_F(RsaaPassApi, TheColoursMinificationFilterDoesNotMatter) {
+  const test::SceneFrame scene("builtin:edges", kWidth, kHeight);
+  RsaaPass pass(test::paper_resolve(), kWidth, kHeight);
+  scene.render_subsamples(pass);
+  const RsaaFrame frame = scene.frame();
+  const gl::Texture linear_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(frame, linear_output.get());
+  glTextureParameteri(frame.colour, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  const gl::Texture nearest_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(frame, nearest_output.get());
+  glTextureParameteri(frame.colour, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  const Image a = read_back_image(linear_output.get(), kWidth, kHeight);
+  const Image b = read_back_image(nearest_output.get(), kWidth, kHeight);
+  const Image one_x = read_back_image(frame.colour, kWidth, kHeight);
+  int differing = 0, resampled = 0;
+  for (std::size_t p = 0; p < a.pixels.size(); ++p) {
+    differing += a.pixels[p].r != b.pixels[p].r || a.pixels[p].g != b.pixels[p].g || a.pixels[p].b != b.pixels[p].b;
+    resampled += a.pixels[p].r != one_x.pixels[p].r;
+  }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GT(resampled, 20);
+}
+
 // The two-pass post-process (an edge pass, then the resolve where it marked a pixel) gives the
 // single pass's image and masks, bit for bit, for the default options and the paper's resolve
 // with each authentication, on scenes with silhouettes, thin parts and many small triangles.
