@@ -80,17 +80,17 @@ vec3 rsaa_post_position(ivec2 pixel) {
 }
 
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
-// Does the centre of pixel `other` show another surface than the centre of `pixel` (normal
-// `normal`, view position `position`)? Background and surface differ; two surfaces compare with
-// the pass's similarity against the threshold.
-bool rsaa_centre_differs(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other) {
+// Does the centre of pixel `other` (its normal and view position given) show another surface than
+// the centre of `pixel`? Background and surface differ; two surfaces compare with the pass's
+// similarity against the threshold.
+bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other, uvec2 other_normal,
+                         vec3 other_position) {
   if (other == pixel) return false;
-  uvec2 other_normal = texelFetch(rsaa_post_centre_normal, other, 0).xy;
   bool a = rsaa_is_surface(normal), b = rsaa_is_surface(other_normal);
   if (a != b) return true;
   if (!a) return false;
-  return rsaa_similarity(position, rsaa_decode_normal(normal), rsaa_post_position(other),
-                         rsaa_decode_normal(other_normal)) > rsaa_threshold;
+  return rsaa_similarity(position, rsaa_decode_normal(normal), other_position, rsaa_decode_normal(other_normal)) >
+         rsaa_threshold;
 }
 
 // Multi-surface resolve (ours, RsaaSettings::multi_surface = "neighbours"). One bilinear fetch
@@ -105,45 +105,54 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   // A non-finite pixel is left to the fetch path, which keeps it (as the CPU reference).
   if (any(isnan(colour)) || any(isinf(colour))) return false;
   ivec2 last = ivec2(rsaa_viewport) - 1;
-  vec3 position = rsaa_post_position(pixel);
-  ivec2 first = ivec2(-1);
-  uvec2 first_normal = uvec2(0u);
-  vec3 first_position = vec3(0.0);
-  bool three = false;
-  uint takes_outside = 0u;  // bit i: dissimilar subsample i takes its outside pixel's colour
-  // Each of the 8 outside pixels is compared once (bit (step.y + 1) * 3 + step.x + 1).
-  uint known = 0u, differing = 0u, compared = 0u;
+  // The outside pixels the dissimilar subsamples point at: bit (step.y + 1) * 3 + step.x + 1 of
+  // the 3x3 neighbourhood.
+  uint pointed = 0u;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     if ((mask & (1u << i)) != 0u) continue;
     ivec2 step = rsaa_neighbours[i].xy;
-    uint bit = 1u << uint((step.y + 1) * 3 + step.x + 1);
-    ivec2 q = clamp(pixel + step, ivec2(0), last);
-    if ((known & bit) == 0u) {
-      known |= bit;
-      if (rsaa_centre_differs(pixel, centre_normal, position, q)) differing |= bit;
-    }
-    if ((differing & bit) == 0u) continue;
-    takes_outside |= 1u << i;
-    if (first.x < 0) {
-      first = q;
-      first_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
-      first_position = rsaa_post_position(q);
-      compared |= bit;
-    } else if (!three && (compared & bit) == 0u) {
-      compared |= bit;
-      three = rsaa_centre_differs(first, first_normal, first_position, q);
-    }
+    pointed |= 1u << uint((step.y + 1) * 3 + step.x + 1);
   }
+  // Each of them read and compared with the centre once (a driver that runs every branch for a
+  // whole SIMD batch, as llvmpipe, pays for each fetch written, taken or not).
+  vec3 position = rsaa_post_position(pixel);
+  ivec2 q[9];
+  uvec2 q_normal[9];
+  vec3 q_position[9], q_colour[9];
+  uint differing = 0u;
+  for (int b = 0; b < 9; ++b) {
+    q[b] = clamp(pixel + ivec2(b % 3 - 1, b / 3 - 1), ivec2(0), last);
+    q_normal[b] = uvec2(0u), q_position[b] = vec3(0.0), q_colour[b] = colour.rgb;
+    if ((pointed & (1u << uint(b))) == 0u) continue;
+    q_normal[b] = texelFetch(rsaa_post_centre_normal, q[b], 0).xy;
+    q_position[b] = rsaa_post_position(q[b]);
+    vec3 outside = texelFetch(rsaa_colour, q[b], 0).rgb;
+    // As the fetch path: a NaN or infinite neighbour never spreads into this pixel.
+    if (!any(isnan(outside)) && !any(isinf(outside))) q_colour[b] = outside;
+    if (rsaa_centres_differ(pixel, centre_normal, position, q[b], q_normal[b], q_position[b]))
+      differing |= 1u << uint(b);
+  }
+  // 3+ surfaces: a second differing outside pixel that differs from the first one too.
+  int first = -1;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    ivec2 step = rsaa_neighbours[i].xy;
+    int b = (step.y + 1) * 3 + step.x + 1;
+    if (first < 0 && (mask & (1u << i)) == 0u && (differing & (1u << uint(b))) != 0u) first = b;
+  }
+  if (first < 0) return false;
+  bool three = false;
+  for (int b = 0; b < 9; ++b)
+    if (b != first && (differing & (1u << uint(b))) != 0u)
+      three = three || rsaa_centres_differ(q[first], q_normal[first], q_position[first], q[b], q_normal[b], q_position[b]);
   if (!three) return false;
+  // The mean over the subsamples: a similar one takes the centre's colour, a dissimilar one the
+  // colour of its outside pixel where that pixel shows another surface.
   vec3 sum = vec3(0.0);
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    vec3 c = colour.rgb;
-    if ((takes_outside & (1u << i)) != 0u) {
-      vec3 outside = texelFetch(rsaa_colour, clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last), 0).rgb;
-      // As the fetch below: a NaN or infinite neighbour never spreads into this pixel.
-      if (!any(isnan(outside)) && !any(isinf(outside))) c = outside;
-    }
-    sum += c;
+    ivec2 step = rsaa_neighbours[i].xy;
+    int b = (step.y + 1) * 3 + step.x + 1;
+    bool outside = (mask & (1u << i)) == 0u && (differing & (1u << uint(b))) != 0u;
+    sum += outside ? q_colour[b] : colour.rgb;
   }
   resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
   return true;
