@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/packing.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 
 #include "runtime/gl_context.h"
@@ -40,6 +42,15 @@ Normal3 decode_unit_vector(std::uint32_t packed) {
   return {x / len, y / len, z / len};
 }
 
+// coverage_record.glsl's decode_albedo: 3 x 10 bits of the square root.
+Rgb decode_albedo(std::uint32_t code) {
+  const auto channel = [&](int shift) {
+    const float e = float((code >> shift) & 0x3ffu) / 1023.0f;
+    return e * e;
+  };
+  return {channel(0), channel(10), channel(20)};
+}
+
 float bits_to_float(std::uint32_t u) {
   float f;
   std::memcpy(&f, &u, 4);
@@ -48,14 +59,16 @@ float bits_to_float(std::uint32_t u) {
 
 }  // namespace
 
-CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height)
+CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height,
+                                             bool shading_inputs)
     : width_(width),
       height_(height),
+      shading_inputs_(shading_inputs),
       lut_(coverage_pattern),
       program_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                  {GL_GEOMETRY_SHADER, gl::shader_source("coverage_fragments.geom")},
                                  {GL_FRAGMENT_SHADER, gl::shader_source("coverage_fragments.frag")}},
-                                "", "coverage fragment lists")),
+                                shading_inputs ? "#define COVERAGE_SHADING_INPUTS\n" : "", "coverage fragment lists")),
       lut_texture_(make_lut_texture(lut_)),
       heads_(gl::make_texture_2d(GL_R32UI, width, height)) {
   GLuint id;
@@ -170,8 +183,13 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
         f.coverage = Mask(r[2]) | Mask(r[3]) << 32;
         f.depth = {bits_to_float(r[4]), bits_to_float(r[5]), bits_to_float(r[6])};
         f.normal = decode_unit_vector(r[7]);
-        const glm::vec2 rg = glm::unpackHalf2x16(r[8]), b = glm::unpackHalf2x16(r[9]);
-        f.colour = {rg.x, rg.y, b.x};
+        if (shading_inputs_) {
+          f.albedo = decode_albedo(r[8]);
+          f.shading_normal = decode_unit_vector(r[9]);
+        } else {
+          const glm::vec2 rg = glm::unpackHalf2x16(r[8]), b = glm::unpackHalf2x16(r[9]);
+          f.colour = {rg.x, rg.y, b.x};
+        }
         list.push_back(f);
       }
       std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
@@ -180,12 +198,19 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
   return pixels;
 }
 
+namespace {
+std::string resolve_defines(const std::string& resolve_define, bool shade_surfaces) {
+  return "#define " + resolve_define + "\n" +
+         (shade_surfaces ? "#define COVERAGE_SHADING_INPUTS\n#define DCAA_SHADE_SURFACES\n" : "");
+}
+}  // namespace
+
 CoverageListTechnique::CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define,
-                                             int width, int height, bool z_prepass)
-    : lists_(coverage_pattern, width, height),
-      resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")),
-      continue_(make_fullscreen_program("coverage_resolve.frag",
-                                        "#define " + resolve_define + "\n#define COVERAGE_CONTINUE\n")),
+                                             int width, int height, bool z_prepass, bool shade_surfaces)
+    : lists_(coverage_pattern, width, height, shade_surfaces),
+      resolve_(make_fullscreen_program("coverage_resolve.frag", resolve_defines(resolve_define, shade_surfaces))),
+      continue_(make_fullscreen_program("coverage_resolve.frag", resolve_defines(resolve_define, shade_surfaces) +
+                                                                     "#define COVERAGE_CONTINUE\n")),
       pending_index_(gl::make_texture_2d(GL_R32UI, width, height)) {
   if (z_prepass) lists_.enable_z_prepass();
   GLuint id;
@@ -222,9 +247,15 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
   timer_.begin("resolve");
   const GLuint program = resolve_.get();
   const glm::vec3 bg = scene.background();
+  const glm::mat4 inverse_projection = glm::inverse(view.projection);
   for (GLuint p : resolve_programs()) {
     lists_.bind_for_resolve(p);
     glProgramUniform3f(p, glGetUniformLocation(p, "u_background"), bg.r, bg.g, bg.b);
+    if (lists_.shading_inputs()) {
+      glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "u_inverse_projection"), 1, GL_FALSE,
+                                glm::value_ptr(inverse_projection));
+      glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(view.width), float(view.height));
+    }
   }
   const std::uint32_t none = 0;
   glClearTexImage(pending_index_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);

@@ -25,8 +25,10 @@ class CoverageFragmentLists {
   static constexpr int kRecordBytes = 40;
 
   // `coverage_pattern`: the coverage samples of the technique (64 for DCAA, 16 for dynamic
-  // coverage), whose half-plane LUT the geometry pass uses.
-  CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height);
+  // coverage), whose half-plane LUT the geometry pass uses. `shading_inputs`: records carry the
+  // albedo and shading normal instead of a shaded colour (dcaa --shade surface).
+  CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height, bool shading_inputs = false);
+  bool shading_inputs() const { return shading_inputs_; }
 
   // From now on build() stores only fragments not behind the farthest of the pixel's 4 hardware
   // MSAA depths, which z_prepass() draws (DCAA's section 4.2 with 4 samples; llvmpipe has no 8).
@@ -55,6 +57,7 @@ class CoverageFragmentLists {
   void allocate_records(std::size_t capacity);
 
   int width_, height_;
+  bool shading_inputs_;
   HalfPlaneLut lut_;
   gl::Program program_;
   gl::Texture lut_texture_, heads_;
@@ -77,8 +80,10 @@ class CoverageFragmentLists {
 // loops after 65535 iterations), so any list is replayed whole and in order.
 class CoverageListTechnique : public Technique {
  public:
+  // shade_surfaces: the lists carry shading inputs and the resolve shades each surface once
+  // (DCAA_SHADE_SURFACES; only with COVERAGE_DCAA).
   CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define, int width,
-                        int height, bool z_prepass = false);
+                        int height, bool z_prepass = false, bool shade_surfaces = false);
   void render(const GpuScene& scene, const View& view, GLuint output) override;
   double bytes_per_pixel() const override;
   CoverageFragmentLists* coverage_lists() { return &lists_; }

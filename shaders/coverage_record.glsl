@@ -1,6 +1,9 @@
 // One fragment of the per-pixel lists of the coverage-based techniques (DCAA, dynamic coverage):
 // 10 uints (40 bytes) in a shader storage buffer, linked from an R32UI head image (0xffffffff
 // ends a list). The C++ side (runtime/coverage_lists.cpp) reads the same layout back.
+// With COVERAGE_SHADING_INPUTS (dcaa --shade surface) the last two words hold the shading inputs
+// instead of the colour: `colour` is then the albedo (3 x 10-bit unorm of its square root, clamped
+// to [0, 1]) and `shading_normal` the unit shading normal (octahedral, 2 x snorm16).
 #ifndef RSAA_COVERAGE_RECORD_GLSL
 #define RSAA_COVERAGE_RECORD_GLSL
 
@@ -19,8 +22,36 @@ struct CoverageRecord {
   uvec2 coverage;  // bits 0-31, 32-63
   vec3 depth;      // window depth at the pixel centre, d/dx, d/dy (pixel space, y down)
   uint normal;     // octahedral, 2 x snorm16
-  vec3 colour;     // linear, 2 x half2
+  vec3 colour;     // linear, 2 x half2; the albedo with COVERAGE_SHADING_INPUTS
+#ifdef COVERAGE_SHADING_INPUTS
+  vec3 shading_normal;
+#endif
 };
+
+// Octahedral encoding of a unit vector in 2 x 16 bits.
+uint encode_unit_vector(vec3 n) {
+  n /= abs(n.x) + abs(n.y) + abs(n.z);
+  vec2 e = n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+  return packSnorm2x16(e);
+}
+
+vec3 decode_unit_vector(uint code) {
+  vec2 e = unpackSnorm2x16(code);
+  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+  if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+  return normalize(n);
+}
+
+// An albedo in [0, 1] as 3 x 10 bits of its square root (finer steps in the darks, where the
+// sRGB output is steepest).
+uint encode_albedo(vec3 a) {
+  uvec3 q = uvec3(round(sqrt(clamp(a, 0.0, 1.0)) * 1023.0));
+  return q.r | q.g << 10 | q.b << 20;
+}
+vec3 decode_albedo(uint code) {
+  vec3 e = vec3(uvec3(code, code >> 10, code >> 20) & 0x3ffu) / 1023.0;
+  return e * e;
+}
 
 void coverage_store(uint i, CoverageRecord r) {
   uint b = i * COVERAGE_RECORD_UINTS;
@@ -32,8 +63,13 @@ void coverage_store(uint i, CoverageRecord r) {
   coverage_records[b + 5u] = floatBitsToUint(r.depth.y);
   coverage_records[b + 6u] = floatBitsToUint(r.depth.z);
   coverage_records[b + 7u] = r.normal;
+#ifdef COVERAGE_SHADING_INPUTS
+  coverage_records[b + 8u] = encode_albedo(r.colour);
+  coverage_records[b + 9u] = encode_unit_vector(r.shading_normal);
+#else
   coverage_records[b + 8u] = packHalf2x16(r.colour.rg);
   coverage_records[b + 9u] = packHalf2x16(vec2(r.colour.b, 0.0));
+#endif
 }
 
 CoverageRecord coverage_load(uint i) {
@@ -45,15 +81,13 @@ CoverageRecord coverage_load(uint i) {
   r.depth = vec3(uintBitsToFloat(coverage_records[b + 4u]), uintBitsToFloat(coverage_records[b + 5u]),
                  uintBitsToFloat(coverage_records[b + 6u]));
   r.normal = coverage_records[b + 7u];
+#ifdef COVERAGE_SHADING_INPUTS
+  r.colour = decode_albedo(coverage_records[b + 8u]);
+  r.shading_normal = decode_unit_vector(coverage_records[b + 9u]);
+#else
   r.colour = vec3(unpackHalf2x16(coverage_records[b + 8u]), unpackHalf2x16(coverage_records[b + 9u]).x);
+#endif
   return r;
-}
-
-vec3 decode_unit_vector(uint code) {
-  vec2 e = unpackSnorm2x16(code);
-  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
-  if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-  return normalize(n);
 }
 
 #endif  // RSAA_COVERAGE_RECORD_GLSL

@@ -17,7 +17,18 @@
 // SCAN_PER_PASS records, keeping the SORT_SLOTS smallest primitive orders above the last one
 // replayed in a max-heap; a finished walk replays them in order, and another walk starts while
 // the pass has rounds left. Any length, bounded per pass.
+//
+// DCAA_SHADE_SURFACES (dcaa --shade surface, with COVERAGE_SHADING_INPUTS): a surface's colour
+// slot holds its merged albedo and s_shading_normal its merged shading normal; the resolve shades
+// each surface that shows a coverage sample once, at the view position of its depth plane at the
+// pixel centre (DcaaPixel::resolve with a DcaaSurfaceShader).
 #include "coverage_record.glsl"
+#ifdef DCAA_SHADE_SURFACES
+#include "rsaa_common.glsl"
+#include "shading.glsl"
+uniform mat4 u_inverse_projection;
+uniform vec2 u_viewport;
+#endif
 
 layout(r32ui) uniform readonly uimage2D u_heads;
 uniform vec3 u_background;  // linear clear colour
@@ -61,7 +72,10 @@ const int MAX_SURFACES = DCAA_MAX_SURFACES;
 uvec2 s_coverage[MAX_SURFACES + 1];
 vec3 s_depth[MAX_SURFACES + 1];
 vec3 s_normal[MAX_SURFACES + 1];
-vec3 s_colour[MAX_SURFACES + 1];
+vec3 s_colour[MAX_SURFACES + 1];  // the albedo with DCAA_SHADE_SURFACES
+#ifdef DCAA_SHADE_SURFACES
+vec3 s_shading_normal[MAX_SURFACES + 1];
+#endif
 int s_count = 0;
 
 int bits(uvec2 m) { return bitCount(m.x) + bitCount(m.y); }
@@ -80,6 +94,11 @@ void merge_into(int i, int j) {
   vec3 n = ka * s_normal[i] + kb * s_normal[j];
   float len = length(n);
   s_normal[i] = len > 1e-6 ? n / len : (wa >= wb ? s_normal[i] : s_normal[j]);
+#ifdef DCAA_SHADE_SURFACES
+  vec3 m = ka * s_shading_normal[i] + kb * s_shading_normal[j];
+  float m_len = length(m);
+  s_shading_normal[i] = m_len > 1e-6 ? m / m_len : (wa >= wb ? s_shading_normal[i] : s_shading_normal[j]);
+#endif
   s_coverage[i] |= s_coverage[j];
   s_depth[i] = ka * s_depth[i] + kb * s_depth[j];
   s_colour[i] = ka * s_colour[i] + kb * s_colour[j];
@@ -90,6 +109,9 @@ void copy_slot(int to, int from) {
   s_depth[to] = s_depth[from];
   s_normal[to] = s_normal[from];
   s_colour[to] = s_colour[from];
+#ifdef DCAA_SHADE_SURFACES
+  s_shading_normal[to] = s_shading_normal[from];
+#endif
 }
 
 bool covers(int i, int s) {
@@ -123,6 +145,9 @@ void insert_fragment(CoverageRecord r) {
   s_depth[in_slot] = r.depth;
   s_normal[in_slot] = decode_unit_vector(r.normal);
   s_colour[in_slot] = r.colour;
+#ifdef DCAA_SHADE_SURFACES
+  s_shading_normal[in_slot] = r.shading_normal;
+#endif
   int best = -1;
   float best_dot = 0.0, best_overlap = 0.0;
   for (int i = 0; i < s_count; ++i) {
@@ -194,33 +219,57 @@ void insert_fragment(CoverageRecord r) {
   for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
 }
 
-#if 1 + 11 * DCAA_MAX_SURFACES + 5 + 2 * 32 > 128
-#error "DCAA_MAX_SURFACES: the pending entry holds at most 5 surfaces"
+// A surface's state in a pending entry: coverage, depth plane, normal, colour (or albedo) and,
+// shading surfaces, the shading normal, as exact floats (the replay goes on where it stopped).
+#ifdef DCAA_SHADE_SURFACES
+#define DCAA_SURFACE_UINTS 14
+#else
+#define DCAA_SURFACE_UINTS 11
+#endif
+const uint SURFACE_UINTS = uint(DCAA_SURFACE_UINTS);
+#if 1 + DCAA_SURFACE_UINTS * DCAA_MAX_SURFACES + 5 + 2 * 32 > 128
+#error "DCAA_MAX_SURFACES: too many surfaces for a pending entry"
 #endif
 void save_state(uint b) {
   coverage_pending[b] = uint(s_count);
   for (int i = 0; i < s_count; ++i) {
-    uint o = b + 1u + 11u * uint(i);
+    uint o = b + 1u + SURFACE_UINTS * uint(i);
     coverage_pending[o + 0u] = s_coverage[i].x;
     coverage_pending[o + 1u] = s_coverage[i].y;
     for (int c = 0; c < 3; ++c) {
       coverage_pending[o + 2u + uint(c)] = floatBitsToUint(s_depth[i][c]);
       coverage_pending[o + 5u + uint(c)] = floatBitsToUint(s_normal[i][c]);
       coverage_pending[o + 8u + uint(c)] = floatBitsToUint(s_colour[i][c]);
+#ifdef DCAA_SHADE_SURFACES
+      coverage_pending[o + 11u + uint(c)] = floatBitsToUint(s_shading_normal[i][c]);
+#endif
     }
   }
 }
 void load_state(uint b) {
   s_count = int(coverage_pending[b]);
   for (int i = 0; i < s_count; ++i) {
-    uint o = b + 1u + 11u * uint(i);
+    uint o = b + 1u + SURFACE_UINTS * uint(i);
     s_coverage[i] = uvec2(coverage_pending[o + 0u], coverage_pending[o + 1u]);
     for (int c = 0; c < 3; ++c) {
       s_depth[i][c] = uintBitsToFloat(coverage_pending[o + 2u + uint(c)]);
       s_normal[i][c] = uintBitsToFloat(coverage_pending[o + 5u + uint(c)]);
       s_colour[i][c] = uintBitsToFloat(coverage_pending[o + 8u + uint(c)]);
+#ifdef DCAA_SHADE_SURFACES
+      s_shading_normal[i][c] = uintBitsToFloat(coverage_pending[o + 11u + uint(c)]);
+#endif
     }
   }
+}
+
+// The surface's colour at the resolve: its fragments' merged colour, or shaded once.
+vec3 surface_colour(int i) {
+#ifdef DCAA_SHADE_SURFACES
+  vec3 position = rsaa_view_position(gl_FragCoord.xy, s_depth[i].x, u_inverse_projection, u_viewport);
+  return shade_surface(s_colour[i], s_shading_normal[i], position, SCENE_SPECULAR_EXPONENT, SCENE_SPECULAR_SCALE);
+#else
+  return s_colour[i];
+#endif
 }
 
 vec3 resolve_pixel() {
@@ -230,7 +279,8 @@ vec3 resolve_pixel() {
   float n = float(u_coverage_sample_count);
   vec3 c = vec3(0.0);
   for (int i = 0; i < s_count; ++i) {
-    c += float(counts[i]) / n * s_colour[i];
+    if (counts[i] == 0) continue;  // hidden: not shaded
+    c += float(counts[i]) / n * surface_colour(i);
     covered += counts[i];
   }
   return c + float(u_coverage_sample_count - covered) / n * u_background;

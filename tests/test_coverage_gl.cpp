@@ -7,6 +7,7 @@
 
 #include "core/reference/dcaa.h"
 #include "core/reference/dynamic_coverage.h"
+#include "core/reference/scene_shading.h"
 #include "image/image_io.h"
 #include "image/image_metrics.h"
 #include "runtime/coverage_lists.h"
@@ -30,13 +31,30 @@ struct Rendered {
   int pixels_over_2 = 0;  // pixels with a channel more than 2/255 apart
 };
 
+// DcaaPixel::resolve's shading of a surface once (dcaa --shade surface), as coverage_resolve.frag
+// does it: the scene's shading at the view position of the surface's depth at the pixel centre.
+DcaaSurfaceShader surface_shader(const View& view, const Scene& scene, int x, int y) {
+  const glm::mat4 inverse_projection = glm::inverse(view.projection);
+  const float wx = float(x) + 0.5f, wy = float(view.height - 1 - y) + 0.5f;  // GL window space
+  return [=, &scene](const DcaaSurface& s) {
+    const glm::vec4 v = inverse_projection * glm::vec4(wx / float(view.width) * 2.0f - 1.0f,
+                                                       wy / float(view.height) * 2.0f - 1.0f,
+                                                       s.depth.at_centre * 2.0f - 1.0f, 1.0f);
+    const Normal3 position{v.x / v.w, v.y / v.w, v.z / v.w};
+    return shade_surface(s.albedo, s.shading_normal, position, kSceneSpecularExponent, kSceneSpecularScale, 1.0f,
+                         scene.point_lights);
+  };
+}
+
 // Renders `technique` and resolves the same fragment lists on the CPU.
 Rendered render_both(const std::string& technique, const Scene& scene, int width, int height,
-                     const std::string& rules = TechniqueOptions{}.rules) {
+                     const std::string& rules = TechniqueOptions{}.rules,
+                     const std::string& shade = TechniqueOptions{}.shade) {
   const GpuScene gpu(scene);
   const View view = make_view(choose_camera(scene, std::nullopt), width, height);
   TechniqueOptions options = technique_options(technique);
   options.rules = rules;
+  options.shade = shade;
   auto t = make_technique(options, width, height);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
   t->render(gpu, view, output.get());
@@ -52,7 +70,9 @@ Rendered render_both(const std::string& technique, const Scene& scene, int width
     if (technique == "dcaa") {
       DcaaPixel pixel(dcaa_settings(rules), &lists->lut().pattern());
       for (const CoverageFragment& f : pixels[i]) pixel.insert(f);
-      cpu.pixels[i] = pixel.resolve(lists->lut().pattern(), background);
+      cpu.pixels[i] = pixel.resolve(lists->lut().pattern(), background,
+                                    shade == "surface" ? surface_shader(view, scene, i % width, i / width)
+                                                       : DcaaSurfaceShader{});
     } else {
       DynamicCoveragePixel pixel(background, dynamic_coverage_rules(rules));
       for (const CoverageFragment& f : pixels[i]) pixel.insert(f);
@@ -71,8 +91,9 @@ Rendered render_both(const std::string& technique, const Scene& scene, int width
 }
 
 Rendered render_both(const std::string& technique, const std::string& scene_name, int width, int height,
-                     const std::string& rules = TechniqueOptions{}.rules) {
-  return render_both(technique, load_scene(scene_name), width, height, rules);
+                     const std::string& rules = TechniqueOptions{}.rules,
+                     const std::string& shade = TechniqueOptions{}.shade) {
+  return render_both(technique, load_scene(scene_name), width, height, rules, shade);
 }
 
 // `count` triangles stacked front to back, each turned about the view axis (their edges cross
@@ -108,12 +129,34 @@ Scene stacked_triangles(int count) {
 }
 
 TEST_F(CoverageGl, DcaaEqualsItsCpuReferenceOnTheSameFragments) {
-  for (const char* rules : {"surface", "paper"})
-    for (const char* scene : {"builtin:default", "builtin:interpenetrating", "builtin:star"}) {
-      const Rendered r = render_both("dcaa", scene, 96, 72, rules);
-      EXPECT_GT(r.fragments, std::size_t(96 * 72));
-      EXPECT_LE(r.worst, 2) << rules << " " << scene << ": pixel " << r.worst_pixel % 96 << ", " << r.worst_pixel / 96;
-    }
+  for (const char* shade : {"fragment", "surface"})
+    for (const char* rules : {"surface", "paper"})
+      for (const char* scene : {"builtin:default", "builtin:interpenetrating", "builtin:star"}) {
+        const Rendered r = render_both("dcaa", scene, 96, 72, rules, shade);
+        EXPECT_GT(r.fragments, std::size_t(96 * 72));
+        EXPECT_LE(r.worst, 2) << shade << " " << rules << " " << scene << ": pixel " << r.worst_pixel % 96 << ", "
+                              << r.worst_pixel / 96;
+      }
+}
+
+// Shading each surface once from its merged attributes: a surface of many triangles (the
+// sphere, the tiles) gives nearly the image of shading each fragment; the scene's point lights
+// reach the resolve's shading (GL equal to the CPU reference with two of them).
+TEST_F(CoverageGl, DcaaShadingSurfacesOnceIsCloseToShadingFragments) {
+  Scene scene = load_scene("builtin:default");
+  const GpuScene gpu(scene);
+  const Camera camera = choose_camera(scene, std::nullopt);
+  TechniqueOptions options = technique_options("dcaa");
+  options.shade = "fragment";
+  const DisplayImage per_fragment = to_display(render_frame(gpu, camera, options, 160, 120));
+  options.shade = "surface";
+  const DisplayImage per_surface = to_display(render_frame(gpu, camera, options, 160, 120));
+  EXPECT_GT(compare_images(per_surface, per_fragment).psnr_db, 40.0);
+
+  scene.point_lights = {PointLight{{0.5f, 0.5f, -2.0f}, 1.0f, {1.0f, 0.5f, 0.2f}},
+                        PointLight{{-1.0f, 0.0f, -4.0f}, 2.0f, {0.2f, 0.4f, 1.0f}}};
+  const Rendered r = render_both("dcaa", scene, 96, 72, "surface", "surface");
+  EXPECT_LE(r.worst, 2) << "pixel " << r.worst_pixel % 96 << ", " << r.worst_pixel / 96;
 }
 
 TEST_F(CoverageGl, ListsLongerThanTheLocalSortAreReplayedInOrderToo) {
@@ -122,12 +165,17 @@ TEST_F(CoverageGl, ListsLongerThanTheLocalSortAreReplayedInOrderToo) {
   // Over a hundred merges a pixel, a choice between two slots whose normals are equal to 1e-7
   // can go either way between the GL and CPU floats (seen once in 48 pixels with the surface
   // rules): one pixel may differ more, by less than 8/255.
-  for (const auto& [technique, rules] : {std::pair{"dcaa", "surface"}, std::pair{"dcaa", "paper"},
-                                         std::pair{"dyncov", "surface"}, std::pair{"dyncov", "seed"}}) {
-    const Rendered r = render_both(technique, "builtin:default", 8, 6, rules);
+  struct Case {
+    const char *technique, *rules, *shade;
+  };
+  for (const auto& [technique, rules, shade] :
+       {Case{"dcaa", "surface", "fragment"}, Case{"dcaa", "paper", "fragment"}, Case{"dcaa", "surface", "surface"},
+        Case{"dyncov", "surface", "fragment"}, Case{"dyncov", "seed", "fragment"}}) {
+    const Rendered r = render_both(technique, "builtin:default", 8, 6, rules, shade);
     EXPECT_GT(r.longest_list, 32u);
-    EXPECT_LE(r.pixels_over_2, 1) << technique << " " << rules;
-    EXPECT_LT(r.worst, 8) << technique << " " << rules << ": pixel " << r.worst_pixel % 8 << ", " << r.worst_pixel / 8;
+    EXPECT_LE(r.pixels_over_2, 1) << technique << " " << rules << " " << shade;
+    EXPECT_LT(r.worst, 8) << technique << " " << rules << " " << shade << ": pixel " << r.worst_pixel % 8 << ", "
+                          << r.worst_pixel / 8;
   }
 }
 

@@ -9,7 +9,8 @@ namespace {
 
 bool finite_fragment(const CoverageFragment& f) {
   return std::isfinite(f.depth.at_centre) && std::isfinite(f.depth.ddx) && std::isfinite(f.depth.ddy) &&
-         std::isfinite(f.colour.r) && std::isfinite(f.colour.g) && std::isfinite(f.colour.b);
+         std::isfinite(f.colour.r) && std::isfinite(f.colour.g) && std::isfinite(f.colour.b) &&
+         std::isfinite(f.albedo.r) && std::isfinite(f.albedo.g) && std::isfinite(f.albedo.b);
 }
 
 Normal3 viewer_normal_if_bad(Normal3 n) {
@@ -32,6 +33,13 @@ std::vector<int> front_counts(const std::vector<DcaaSurface>& surfaces, const Sa
     if (front >= 0) ++counts[front];
   }
   return counts;
+}
+
+// ka a + kb b renormalised; opposite normals average to nothing: then the heavier one's.
+Normal3 weighted_normal(Normal3 a, Normal3 b, float ka, float kb, bool a_heavier) {
+  const Normal3 n{ka * a.x + kb * b.x, ka * a.y + kb * b.y, ka * a.z + kb * b.z};
+  const float len = std::sqrt(dot(n, n));
+  return len > 1e-6f ? Normal3{n.x / len, n.y / len, n.z / len} : (a_heavier ? a : b);
 }
 
 }  // namespace
@@ -63,18 +71,17 @@ DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b) {
   m.coverage = a.coverage | b.coverage;
   m.depth = {ka * a.depth.at_centre + kb * b.depth.at_centre, ka * a.depth.ddx + kb * b.depth.ddx,
              ka * a.depth.ddy + kb * b.depth.ddy};
-  const Normal3 n{ka * a.normal.x + kb * b.normal.x, ka * a.normal.y + kb * b.normal.y,
-                  ka * a.normal.z + kb * b.normal.z};
-  const float len = std::sqrt(dot(n, n));
-  // Opposite normals average to nothing: keep the heavier one's.
-  m.normal = len > 1e-6f ? Normal3{n.x / len, n.y / len, n.z / len} : (wa >= wb ? a.normal : b.normal);
+  m.normal = weighted_normal(a.normal, b.normal, ka, kb, wa >= wb);
+  m.shading_normal = weighted_normal(a.shading_normal, b.shading_normal, ka, kb, wa >= wb);
   m.colour = {ka * a.colour.r + kb * b.colour.r, ka * a.colour.g + kb * b.colour.g, ka * a.colour.b + kb * b.colour.b};
+  m.albedo = {ka * a.albedo.r + kb * b.albedo.r, ka * a.albedo.g + kb * b.albedo.g, ka * a.albedo.b + kb * b.albedo.b};
   return m;
 }
 
 DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
   if (f.coverage == 0 || !finite_fragment(f)) return DcaaEvent::Ignored;
-  const DcaaSurface in{f.coverage, f.depth, viewer_normal_if_bad(f.normal), f.colour};
+  const DcaaSurface in{f.coverage, f.depth, viewer_normal_if_bad(f.normal), f.colour, f.albedo,
+                       viewer_normal_if_bad(f.shading_normal)};
 
   int best = -1;
   float best_dot = 0.0f, best_overlap = 0.0f;
@@ -139,14 +146,16 @@ std::vector<int> DcaaPixel::visible_counts(const SamplePattern& pattern) const {
   return front_counts(surfaces_, pattern);
 }
 
-Rgb DcaaPixel::resolve(const SamplePattern& pattern, Rgb background) const {
+Rgb DcaaPixel::resolve(const SamplePattern& pattern, Rgb background, const DcaaSurfaceShader& shade) const {
   const std::vector<int> counts = visible_counts(pattern);
   const float n = float(pattern.size());
   int covered = 0;
   Rgb c;
   for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+    if (counts[i] == 0) continue;  // hidden: not shaded
     const float w = float(counts[i]) / n;
-    c.r += w * surfaces_[i].colour.r, c.g += w * surfaces_[i].colour.g, c.b += w * surfaces_[i].colour.b;
+    const Rgb colour = shade ? shade(surfaces_[i]) : surfaces_[i].colour;
+    c.r += w * colour.r, c.g += w * colour.g, c.b += w * colour.b;
     covered += counts[i];
   }
   const float rest = float(pattern.size() - covered) / n;

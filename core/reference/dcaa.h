@@ -5,6 +5,7 @@
 // implements the same rules; this is the oracle its tests compare against.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,16 @@ struct DcaaSurface {
   DepthPlane depth;
   Normal3 normal;
   Rgb colour;
+  // Shading once per surface (dcaa --shade surface): the merged shading inputs.
+  Rgb albedo;
+  Normal3 shading_normal;
 };
+
+// How a surface gets its colour at the resolve: `dcaa --shade fragment` keeps each fragment's
+// colour (merged by coverage); `surface` shades each visible surface once from its merged albedo
+// and shading normal at the view position its depth plane gives at the pixel centre (the caller
+// knows the camera: it maps the surface to that position and shades it).
+using DcaaSurfaceShader = std::function<Rgb(const DcaaSurface&)>;
 
 // `dcaa --rules`: "paper" = Algorithm 1 as written (DcaaSettings{}); "surface" (the default) =
 // the answers dynamic coverage's surface rules give to the same questions (core/reference/dynamic_coverage.h):
@@ -48,8 +58,9 @@ struct DcaaSurface {
 // std::invalid_argument for another name.
 DcaaSettings dcaa_settings(const std::string& rules);
 
-// Merge(a, b) of the paper: normals, depth planes and colours averaged weighted by coverage
-// counts (the normal renormalised), coverage ORed. Returns the merged surface.
+// Merge(a, b) of the paper: normals, depth planes, colours and the shading inputs (albedo,
+// shading normal) averaged weighted by coverage counts (normals renormalised), coverage ORed.
+// Returns the merged surface.
 DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b);
 
 // What insert() did with a fragment, for tests and statistics.
@@ -79,7 +90,8 @@ class DcaaPixel {
   // smallest depth at the sample (ties: the earlier surface); samples no surface covers show
   // the background (the clear colour: our scenes have no background geometry).
   // C = sum_i n_i / N c_i + (N - sum n_i) / N background.
-  Rgb resolve(const SamplePattern& coverage_pattern, Rgb background) const;
+  // With `shade`, each surface that shows a sample is shaded once by it (its colour is not used).
+  Rgb resolve(const SamplePattern& coverage_pattern, Rgb background, const DcaaSurfaceShader& shade = {}) const;
   // n_i of each surface after the depth resolve.
   std::vector<int> visible_counts(const SamplePattern& coverage_pattern) const;
 
