@@ -1,7 +1,9 @@
 #include "runtime/coverage_lists.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <utility>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/packing.hpp>
@@ -49,6 +51,17 @@ Rgb decode_albedo(std::uint32_t code) {
     return e * e;
   };
   return {channel(0), channel(10), channel(20)};
+}
+
+// coverage_record.glsl's decode_slopes: 12-bit mantissas, a shared exponent.
+std::pair<float, float> decode_slopes(std::uint32_t code) {
+  const int e = int(code >> 24);
+  if (e == 0) return {0.0f, 0.0f};
+  const auto mantissa = [&](int shift) {
+    const int q = int((code >> shift) & 0xfffu);
+    return q >= 2048 ? q - 4096 : q;
+  };
+  return {std::ldexp(float(mantissa(0)), e - 139), std::ldexp(float(mantissa(12)), e - 139)};
 }
 
 float bits_to_float(std::uint32_t u) {
@@ -181,13 +194,14 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
         CoverageFragment f;
         f.order = r[1];
         f.coverage = Mask(r[2]) | Mask(r[3]) << 32;
-        f.depth = {bits_to_float(r[4]), bits_to_float(r[5]), bits_to_float(r[6])};
-        f.normal = decode_unit_vector(r[7]);
+        const auto [ddx, ddy] = decode_slopes(r[5]);
+        f.depth = {bits_to_float(r[4]), ddx, ddy};
+        f.normal = decode_unit_vector(r[6]);
         if (shading_inputs_) {
-          f.albedo = decode_albedo(r[8]);
-          f.shading_normal = decode_unit_vector(r[9]);
+          f.albedo = decode_albedo(r[7]);
+          f.shading_normal = decode_unit_vector(r[8]);
         } else {
-          const glm::vec2 rg = glm::unpackHalf2x16(r[8]), b = glm::unpackHalf2x16(r[9]);
+          const glm::vec2 rg = glm::unpackHalf2x16(r[7]), b = glm::unpackHalf2x16(r[8]);
           f.colour = {rg.x, rg.y, b.x};
         }
         list.push_back(f);

@@ -22,7 +22,7 @@ namespace rsaa {
 
 class CoverageFragmentLists {
  public:
-  static constexpr int kRecordBytes = 40;
+  static constexpr int kRecordBytes = 36;  // coverage_record.glsl
 
   // `coverage_pattern`: the coverage samples of the technique (64 for DCAA, 16 for dynamic
   // coverage), whose half-plane LUT the geometry pass uses. `shading_inputs`: records carry the
@@ -94,7 +94,7 @@ class CoverageListTechnique : public Technique {
   std::size_t pending_pixels() const { return pending_; }
   int continuation_passes() const { return continuation_passes_; }
 
-  static constexpr int kPendingUints = 128;  // coverage_resolve.frag's PENDING_UINTS
+  static constexpr int kPendingUints = 96;  // coverage_resolve.frag's PENDING_UINTS
 
  protected:
   void allocate_pending(std::size_t capacity);

@@ -1,13 +1,15 @@
 // One fragment of the per-pixel lists of the coverage-based techniques (DCAA, dynamic coverage):
-// 10 uints (40 bytes) in a shader storage buffer, linked from an R32UI head image (0xffffffff
-// ends a list). The C++ side (runtime/coverage_lists.cpp) reads the same layout back.
+// 9 uints (36 bytes) in a shader storage buffer, linked from an R32UI head image (0xffffffff
+// ends a list): next, order, coverage (2), depth at the centre (float), depth slopes (shared
+// exponent), facet normal, then the colour (2). The C++ side (runtime/coverage_lists.cpp) reads
+// the same layout back.
 // With COVERAGE_SHADING_INPUTS (dcaa --shade surface) the last two words hold the shading inputs
 // instead of the colour: `colour` is then the albedo (3 x 10-bit unorm of its square root, clamped
 // to [0, 1]) and `shading_normal` the unit shading normal (octahedral, 2 x snorm16).
 #ifndef RSAA_COVERAGE_RECORD_GLSL
 #define RSAA_COVERAGE_RECORD_GLSL
 
-const uint COVERAGE_RECORD_UINTS = 10u;
+const uint COVERAGE_RECORD_UINTS = 9u;  // CoverageFragmentLists::kRecordBytes / 4
 const uint COVERAGE_LIST_END = 0xffffffffu;
 
 layout(std430, binding = 0) coherent buffer CoverageCounter {
@@ -20,7 +22,7 @@ struct CoverageRecord {
   uint next;
   uint order;      // primitive submission order
   uvec2 coverage;  // bits 0-31, 32-63
-  vec3 depth;      // window depth at the pixel centre, d/dx, d/dy (pixel space, y down)
+  vec3 depth;      // window depth at the pixel centre (float), d/dx, d/dy (pixel space, y down; encode_slopes)
   uint normal;     // octahedral, 2 x snorm16
   vec3 colour;     // linear, 2 x half2; the albedo with COVERAGE_SHADING_INPUTS
 #ifdef COVERAGE_SHADING_INPUTS
@@ -42,6 +44,25 @@ vec3 decode_unit_vector(uint code) {
   return normalize(n);
 }
 
+// The depth plane's slopes (d/dx, d/dy) in 32 bits: two 12-bit signed mantissas in units of
+// 2^(e - 11) with e the exponent of the larger slope (8 bits, biased by 128; 0: both zero). A
+// sample's depth moves by at most 2^-12 of the larger slope, far below the depth differences the
+// merge tests and the resolve compare; the centre depth stays a full float.
+uint encode_slopes(vec2 s) {
+  float m = max(abs(s.x), abs(s.y));
+  if (!(m >= 1e-30)) return 0u;  // zero (or too small to matter at any depth)
+  int e;
+  frexp(m, e);  // m = f 2^e, f in [0.5, 1): |s| < 2^e
+  ivec2 q = clamp(ivec2(round(ldexp(s, ivec2(11 - e)))), ivec2(-2047), ivec2(2047));
+  return (uint(q.x) & 0xfffu) | (uint(q.y) & 0xfffu) << 12 | uint(clamp(e + 128, 1, 255)) << 24;
+}
+vec2 decode_slopes(uint code) {
+  int e = int(code >> 24);
+  if (e == 0) return vec2(0.0);
+  ivec2 q = ivec2(bitfieldExtract(int(code), 0, 12), bitfieldExtract(int(code), 12, 12));
+  return ldexp(vec2(q), ivec2(e - 128 - 11));
+}
+
 // An albedo in [0, 1] as 3 x 10 bits of its square root (finer steps in the darks, where the
 // sRGB output is steepest).
 uint encode_albedo(vec3 a) {
@@ -60,15 +81,14 @@ void coverage_store(uint i, CoverageRecord r) {
   coverage_records[b + 2u] = r.coverage.x;
   coverage_records[b + 3u] = r.coverage.y;
   coverage_records[b + 4u] = floatBitsToUint(r.depth.x);
-  coverage_records[b + 5u] = floatBitsToUint(r.depth.y);
-  coverage_records[b + 6u] = floatBitsToUint(r.depth.z);
-  coverage_records[b + 7u] = r.normal;
+  coverage_records[b + 5u] = encode_slopes(r.depth.yz);
+  coverage_records[b + 6u] = r.normal;
 #ifdef COVERAGE_SHADING_INPUTS
-  coverage_records[b + 8u] = encode_albedo(r.colour);
-  coverage_records[b + 9u] = encode_unit_vector(r.shading_normal);
+  coverage_records[b + 7u] = encode_albedo(r.colour);
+  coverage_records[b + 8u] = encode_unit_vector(r.shading_normal);
 #else
-  coverage_records[b + 8u] = packHalf2x16(r.colour.rg);
-  coverage_records[b + 9u] = packHalf2x16(vec2(r.colour.b, 0.0));
+  coverage_records[b + 7u] = packHalf2x16(r.colour.rg);
+  coverage_records[b + 8u] = packHalf2x16(vec2(r.colour.b, 0.0));
 #endif
 }
 
@@ -78,14 +98,13 @@ CoverageRecord coverage_load(uint i) {
   r.next = coverage_records[b + 0u];
   r.order = coverage_records[b + 1u];
   r.coverage = uvec2(coverage_records[b + 2u], coverage_records[b + 3u]);
-  r.depth = vec3(uintBitsToFloat(coverage_records[b + 4u]), uintBitsToFloat(coverage_records[b + 5u]),
-                 uintBitsToFloat(coverage_records[b + 6u]));
-  r.normal = coverage_records[b + 7u];
+  r.depth = vec3(uintBitsToFloat(coverage_records[b + 4u]), decode_slopes(coverage_records[b + 5u]));
+  r.normal = coverage_records[b + 6u];
 #ifdef COVERAGE_SHADING_INPUTS
-  r.colour = decode_albedo(coverage_records[b + 8u]);
-  r.shading_normal = decode_unit_vector(coverage_records[b + 9u]);
+  r.colour = decode_albedo(coverage_records[b + 7u]);
+  r.shading_normal = decode_unit_vector(coverage_records[b + 8u]);
 #else
-  r.colour = vec3(unpackHalf2x16(coverage_records[b + 8u]), unpackHalf2x16(coverage_records[b + 9u]).x);
+  r.colour = vec3(unpackHalf2x16(coverage_records[b + 7u]), unpackHalf2x16(coverage_records[b + 8u]).x);
 #endif
   return r;
 }

@@ -21,7 +21,8 @@
 // DCAA_SHADE_SURFACES (dcaa --shade surface, with COVERAGE_SHADING_INPUTS): a surface's colour
 // slot holds its merged albedo and s_shading_normal its merged shading normal; the resolve shades
 // each surface that shows a coverage sample once, at the view position of its depth plane at the
-// pixel centre (DcaaPixel::resolve with a DcaaSurfaceShader).
+// pixel centre. A second merge shades both surfaces first and merges colours (a zero shading
+// normal marks a slot already shaded). DcaaPixel with a DcaaSurfaceShader is the oracle.
 #include "coverage_record.glsl"
 #ifdef DCAA_SHADE_SURFACES
 #include "rsaa_common.glsl"
@@ -46,15 +47,16 @@ const int ROUNDS_PER_PASS = 2;
 // Pending entries (long lists), PENDING_UINTS uints each (u_pending_index gives a pixel's
 // entry + 1, 0 for none): 0 unused,
 // 1 flags (1 started, 2 done), 2 last primitive order replayed, 3 cursor (next record to walk),
-// 4 heap size, then the heap's keys and record indices, then the technique's state (save_state).
+// 4 heap size, then the heap's record indices (their keys are the records' orders, read again on
+// load), then the technique's state (save_state).
 layout(std430, binding = 2) coherent buffer CoveragePendingCounter {
   uint pending_used;
   uint pending_capacity;
   uint pending_active;  // entries not done after a continuation pass
 };
 layout(std430, binding = 3) coherent buffer CoveragePending { uint coverage_pending[]; };
-const uint PENDING_UINTS = 128u;  // CoverageListTechnique::kPendingUints
-const uint PENDING_STATE = 5u + 2u * uint(SORT_SLOTS);
+const uint PENDING_UINTS = 96u;  // CoverageListTechnique::kPendingUints
+const uint PENDING_STATE = 5u + uint(SORT_SLOTS);
 
 #ifdef COVERAGE_DCAA
 uniform float u_cos_normal_threshold;
@@ -87,7 +89,23 @@ float overlap_amount(vec3 a, vec3 b) {
   return min(a.x + half_range(a), b.x + half_range(b)) - max(a.x - half_range(a), b.x - half_range(b));
 }
 
-// merge_surfaces() of core/reference/dcaa.cpp, into slot i from slot j.
+#ifdef DCAA_SHADE_SURFACES
+bool is_shaded(int i) { return s_shading_normal[i] == vec3(0.0); }
+// The scene's shading of slot i's merged inputs at its depth plane's view position.
+vec3 shade_slot(int i) {
+  vec3 position = rsaa_view_position(gl_FragCoord.xy, s_depth[i].x, u_inverse_projection, u_viewport);
+  return shade_surface(s_colour[i], s_shading_normal[i], position, SCENE_SPECULAR_EXPONENT, SCENE_SPECULAR_SCALE);
+}
+void make_shaded(int i) {
+  if (is_shaded(i)) return;
+  s_colour[i] = shade_slot(i);
+  s_shading_normal[i] = vec3(0.0);
+}
+#else
+void make_shaded(int i) {}
+#endif
+
+// merge_surfaces() of core/reference/dcaa.cpp, into slot i from slot j (both shaded or neither).
 void merge_into(int i, int j) {
   float wa = float(bits(s_coverage[i])), wb = float(bits(s_coverage[j]));
   float ka = wa + wb > 0.0 ? wa / (wa + wb) : 0.5, kb = 1.0 - ka;
@@ -162,6 +180,9 @@ void insert_fragment(CoverageRecord r) {
     }
   }
   if (best >= 0) {
+#ifdef DCAA_SHADE_SURFACES
+    if (is_shaded(best)) make_shaded(in_slot);
+#endif
     merge_into(best, in_slot);
     return;
   }
@@ -208,6 +229,8 @@ void insert_fragment(CoverageRecord r) {
     if (i == smallest || !overlaps(s_depth[i], s_depth[smallest])) continue;
     float ov = overlap_amount(s_depth[i], s_depth[smallest]);
     if (u_second_merge_into_all) {
+      make_shaded(smallest);
+      make_shaded(i);
       merge_into(i, smallest);
       target = i;
     } else if (target < 0 || ov > target_overlap) {
@@ -215,7 +238,11 @@ void insert_fragment(CoverageRecord r) {
       target_overlap = ov;
     }
   }
-  if (target >= 0 && !u_second_merge_into_all) merge_into(target, smallest);
+  if (target >= 0 && !u_second_merge_into_all) {
+    make_shaded(target);
+    make_shaded(smallest);
+    merge_into(target, smallest);
+  }
   for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
 }
 
@@ -227,7 +254,7 @@ void insert_fragment(CoverageRecord r) {
 #define DCAA_SURFACE_UINTS 11
 #endif
 const uint SURFACE_UINTS = uint(DCAA_SURFACE_UINTS);
-#if 1 + DCAA_SURFACE_UINTS * DCAA_MAX_SURFACES + 5 + 2 * 32 > 128
+#if 1 + DCAA_SURFACE_UINTS * DCAA_MAX_SURFACES + 5 + 32 > 96
 #error "DCAA_MAX_SURFACES: too many surfaces for a pending entry"
 #endif
 void save_state(uint b) {
@@ -265,11 +292,9 @@ void load_state(uint b) {
 // The surface's colour at the resolve: its fragments' merged colour, or shaded once.
 vec3 surface_colour(int i) {
 #ifdef DCAA_SHADE_SURFACES
-  vec3 position = rsaa_view_position(gl_FragCoord.xy, s_depth[i].x, u_inverse_projection, u_viewport);
-  return shade_surface(s_colour[i], s_shading_normal[i], position, SCENE_SPECULAR_EXPONENT, SCENE_SPECULAR_SCALE);
-#else
-  return s_colour[i];
+  if (!is_shaded(i)) return shade_slot(i);
 #endif
+  return s_colour[i];
 }
 
 vec3 resolve_pixel() {
@@ -398,8 +423,8 @@ void main() {
   bool started = (flags & 1u) != 0u;
   h_size = int(coverage_pending[b + 4u]);
   for (int k = 0; k < h_size; ++k) {
-    h_keys[k] = coverage_pending[b + 5u + uint(k)];
-    h_indices[k] = coverage_pending[b + 5u + uint(SORT_SLOTS + k)];
+    h_indices[k] = coverage_pending[b + 5u + uint(k)];
+    h_keys[k] = coverage_records[h_indices[k] * COVERAGE_RECORD_UINTS + 1u];
   }
   load_state(b + PENDING_STATE);
   bool done = false;
@@ -431,10 +456,7 @@ void main() {
   coverage_pending[b + 2u] = last;
   coverage_pending[b + 3u] = cursor;
   coverage_pending[b + 4u] = uint(h_size);
-  for (int k = 0; k < h_size; ++k) {
-    coverage_pending[b + 5u + uint(k)] = h_keys[k];
-    coverage_pending[b + 5u + uint(SORT_SLOTS + k)] = h_indices[k];
-  }
+  for (int k = 0; k < h_size; ++k) coverage_pending[b + 5u + uint(k)] = h_indices[k];
   save_state(b + PENDING_STATE);
   atomicAdd(pending_active, 1u);
   discard;

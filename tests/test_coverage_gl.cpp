@@ -68,11 +68,10 @@ Rendered render_both(const std::string& technique, const Scene& scene, int width
   Image cpu(width, height);
   for (int i = 0; i < width * height; ++i) {
     if (technique == "dcaa") {
-      DcaaPixel pixel(dcaa_settings(rules), &lists->lut().pattern());
+      DcaaPixel pixel(dcaa_settings(rules), &lists->lut().pattern(),
+                      shade == "surface" ? surface_shader(view, scene, i % width, i / width) : DcaaSurfaceShader{});
       for (const CoverageFragment& f : pixels[i]) pixel.insert(f);
-      cpu.pixels[i] = pixel.resolve(lists->lut().pattern(), background,
-                                    shade == "surface" ? surface_shader(view, scene, i % width, i / width)
-                                                       : DcaaSurfaceShader{});
+      cpu.pixels[i] = pixel.resolve(lists->lut().pattern(), background);
     } else {
       DynamicCoveragePixel pixel(background, dynamic_coverage_rules(rules));
       for (const CoverageFragment& f : pixels[i]) pixel.insert(f);
