@@ -19,7 +19,6 @@ namespace rsaa {
 namespace {
 
 constexpr std::uint32_t kListEnd = 0xffffffffu;
-constexpr std::size_t kRecordUints = CoverageFragmentLists::kRecordBytes / 4;
 
 gl::Texture make_lut_texture(const HalfPlaneLut& lut) {
   std::vector<std::uint32_t> texels;
@@ -42,6 +41,15 @@ Normal3 decode_unit_vector(std::uint32_t packed) {
   }
   const float len = std::sqrt(x * x + y * y + z * z);
   return {x / len, y / len, z / len};
+}
+
+// coverage_record.glsl's decode_colour: 11/11/10 bits of the square root of a quarter.
+Rgb decode_colour(std::uint32_t code) {
+  const auto channel = [&](int shift, std::uint32_t mask, float steps) {
+    const float e = float((code >> shift) & mask) / steps;
+    return 4.0f * e * e;
+  };
+  return {channel(0, 0x7ffu, 2047.0f), channel(11, 0x7ffu, 2047.0f), channel(22, 0x3ffu, 1023.0f)};
 }
 
 // coverage_record.glsl's decode_albedo: 3 x 10 bits of the square root.
@@ -77,11 +85,13 @@ CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_patte
     : width_(width),
       height_(height),
       shading_inputs_(shading_inputs),
+      narrow_(coverage_pattern.size() <= 32),
+      record_uints_((narrow_ ? 3 : 4) + (shading_inputs ? 5 : 4)),
       lut_(coverage_pattern),
       program_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                  {GL_GEOMETRY_SHADER, gl::shader_source("coverage_fragments.geom")},
                                  {GL_FRAGMENT_SHADER, gl::shader_source("coverage_fragments.frag")}},
-                                shading_inputs ? "#define COVERAGE_SHADING_INPUTS\n" : "", "coverage fragment lists")),
+                                record_defines(), "coverage fragment lists")),
       lut_texture_(make_lut_texture(lut_)),
       heads_(gl::make_texture_2d(GL_R32UI, width, height)) {
   GLuint id;
@@ -97,15 +107,20 @@ CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_patte
   glProgramUniform2ui(p, glGetUniformLocation(p, "u_full_mask"), GLuint(full), GLuint(full >> 32));
   glProgramUniform1i(p, glGetUniformLocation(p, "u_halfplane_lut"), 1);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_heads"), 0);
-  allocate_records(std::size_t(width) * height * 4);
+  allocate_records(std::size_t(width) * height * kInitialRecordsPerPixel);
   gl::check("coverage fragment lists");
+}
+
+std::string CoverageFragmentLists::record_defines() const {
+  return std::string(narrow_ ? "#define COVERAGE_NARROW\n" : "") +
+         (shading_inputs_ ? "#define COVERAGE_SHADING_INPUTS\n" : "");
 }
 
 void CoverageFragmentLists::allocate_records(std::size_t capacity) {
   GLuint id;
   glCreateBuffers(1, &id);
   records_ = gl::Buffer(id);
-  glNamedBufferStorage(id, GLsizeiptr(capacity * kRecordBytes), nullptr, 0);
+  glNamedBufferStorage(id, GLsizeiptr(capacity * record_bytes()), nullptr, 0);
   capacity_ = capacity;
 }
 
@@ -140,6 +155,11 @@ void CoverageFragmentLists::z_prepass(const GpuScene& scene, const View& view) {
 }
 
 std::size_t CoverageFragmentLists::build(const GpuScene& scene, const View& view) {
+  // The buffer follows the frames' fragment counts: grown to 1.25 x the count when a frame
+  // overflows it (that frame is drawn again), shrunk to 1.25 x the last count when that used less
+  // than half of it (the gap between the two keeps a steady view from reallocating).
+  if (built_ && fragments_ * 2 < capacity_) allocate_records(std::max<std::size_t>(fragments_ + fragments_ / 4, 64));
+  built_ = true;
   for (int attempt = 0;; ++attempt) {
     const std::uint32_t end = kListEnd;
     glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end);
@@ -174,14 +194,15 @@ void CoverageFragmentLists::bind_for_resolve(GLuint program) const {
 }
 
 double CoverageFragmentLists::bytes_per_pixel() const {
-  return 4.0 + double(capacity_) * kRecordBytes / (double(width_) * height_);
+  return 4.0 + double(capacity_) * record_bytes() / (double(width_) * height_);
 }
 
 std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() const {
   std::vector<std::uint32_t> heads(std::size_t(width_) * height_);
   glGetTextureImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(heads.size() * 4), heads.data());
   const std::size_t stored = std::min(fragments_, capacity_);
-  std::vector<std::uint32_t> records(stored * kRecordUints);
+  const std::size_t uints = std::size_t(record_uints_);
+  std::vector<std::uint32_t> records(stored * uints);
   if (stored) glGetNamedBufferSubData(records_.get(), 0, GLsizeiptr(records.size() * 4), records.data());
   std::vector<std::vector<CoverageFragment>> pixels(heads.size());
   for (int y = 0; y < height_; ++y)
@@ -189,20 +210,20 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
       // GL rows are bottom first; ours top first.
       auto& list = pixels[std::size_t(height_ - 1 - y) * width_ + x];
       for (std::uint32_t i = heads[std::size_t(y) * width_ + x]; i != kListEnd && i < stored;
-           i = records[i * kRecordUints]) {
-        const std::uint32_t* r = &records[i * kRecordUints];
+           i = records[i * uints]) {
+        const std::uint32_t* r = &records[i * uints];
         CoverageFragment f;
         f.order = r[1];
-        f.coverage = Mask(r[2]) | Mask(r[3]) << 32;
-        const auto [ddx, ddy] = decode_slopes(r[5]);
-        f.depth = {bits_to_float(r[4]), ddx, ddy};
-        f.normal = decode_unit_vector(r[6]);
+        f.coverage = Mask(r[2]) | (narrow_ ? 0 : Mask(r[3]) << 32);
+        const std::uint32_t* d = r + (narrow_ ? 3 : 4);  // coverage_record.glsl's RECORD_DEPTH
+        const auto [ddx, ddy] = decode_slopes(d[1]);
+        f.depth = {bits_to_float(d[0]), ddx, ddy};
+        f.normal = decode_unit_vector(d[2]);
         if (shading_inputs_) {
-          f.albedo = decode_albedo(r[7]);
-          f.shading_normal = decode_unit_vector(r[8]);
+          f.albedo = decode_albedo(d[3]);
+          f.shading_normal = decode_unit_vector(d[4]);
         } else {
-          const glm::vec2 rg = glm::unpackHalf2x16(r[7]), b = glm::unpackHalf2x16(r[8]);
-          f.colour = {rg.x, rg.y, b.x};
+          f.colour = decode_colour(d[3]);
         }
         list.push_back(f);
       }
@@ -214,16 +235,17 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
 
 namespace {
 std::string resolve_defines(const std::string& resolve_define, bool shade_surfaces) {
-  return "#define " + resolve_define + "\n" +
-         (shade_surfaces ? "#define COVERAGE_SHADING_INPUTS\n#define DCAA_SHADE_SURFACES\n" : "");
+  return "#define " + resolve_define + "\n" + (shade_surfaces ? "#define DCAA_SHADE_SURFACES\n" : "");
 }
 }  // namespace
 
 CoverageListTechnique::CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define,
                                              int width, int height, bool z_prepass, bool shade_surfaces)
     : lists_(coverage_pattern, width, height, shade_surfaces),
-      resolve_(make_fullscreen_program("coverage_resolve.frag", resolve_defines(resolve_define, shade_surfaces))),
+      resolve_(make_fullscreen_program("coverage_resolve.frag",
+                                       resolve_defines(resolve_define, shade_surfaces) + lists_.record_defines())),
       continue_(make_fullscreen_program("coverage_resolve.frag", resolve_defines(resolve_define, shade_surfaces) +
+                                                                     lists_.record_defines() +
                                                                      "#define COVERAGE_CONTINUE\n")),
       pending_index_(gl::make_texture_2d(GL_R32UI, width, height)) {
   if (z_prepass) lists_.enable_z_prepass();

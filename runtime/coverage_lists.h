@@ -3,12 +3,13 @@
 // has none, so a geometry pass appends every fragment (shaded once, with its coverage mask from
 // the half-plane LUT, its depth plane and facet normal) to a linked list per pixel with atomics,
 // and the technique's resolve pass replays each list sorted by primitive order. Same result as
-// the interlocked design; the cost is memory proportional to the fragment count (40 B per
+// the interlocked design; the cost is memory proportional to the fragment count (28-36 B per
 // fragment + 4 B per pixel, instead of the technique's fixed per-pixel state), and no early
 // merge: every fragment is stored, then sorted.
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/reference/coverage_fragment.h"
@@ -22,13 +23,17 @@ namespace rsaa {
 
 class CoverageFragmentLists {
  public:
-  static constexpr int kRecordBytes = 36;  // coverage_record.glsl
+  static constexpr int kInitialRecordsPerPixel = 2;
 
   // `coverage_pattern`: the coverage samples of the technique (64 for DCAA, 16 for dynamic
   // coverage), whose half-plane LUT the geometry pass uses. `shading_inputs`: records carry the
   // albedo and shading normal instead of a shaded colour (dcaa --shade surface).
   CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height, bool shading_inputs = false);
   bool shading_inputs() const { return shading_inputs_; }
+  // coverage_record.glsl's layout for these lists: its #defines and the bytes of a record
+  // (32 for 64 samples, 28 for at most 32, 4 more with shading inputs).
+  std::string record_defines() const;
+  int record_bytes() const { return 4 * record_uints_; }
 
   // From now on build() stores only fragments not behind the farthest of the pixel's 4 hardware
   // MSAA depths, which z_prepass() draws (DCAA's section 4.2 with 4 samples; llvmpipe has no 8).
@@ -36,8 +41,8 @@ class CoverageFragmentLists {
   bool z_prepass_enabled() const { return bool(max_depth_.get()); }
   void z_prepass(const GpuScene& scene, const View& view);
 
-  // Draws the scene into the lists; grows the record buffer and draws again when it overflowed.
-  // Returns the number of fragments stored.
+  // Draws the scene into the lists; grows the record buffer and draws again when it overflowed
+  // (shrinks it first when the last frame used less than half). Returns the fragments stored.
   std::size_t build(const GpuScene& scene, const View& view);
 
   // Binds the head image (unit 0, read-only) and the record buffers for a resolve program.
@@ -58,12 +63,15 @@ class CoverageFragmentLists {
 
   int width_, height_;
   bool shading_inputs_;
+  bool narrow_;  // at most 32 coverage samples: one coverage word
+  int record_uints_;
   HalfPlaneLut lut_;
   gl::Program program_;
   gl::Texture lut_texture_, heads_;
   gl::Buffer counter_, records_;
   gl::Framebuffer empty_target_;
   std::size_t capacity_ = 0, fragments_ = 0;
+  bool built_ = false;
   // z-prepass (enable_z_prepass)
   gl::Texture prepass_depth_, max_depth_;
   gl::Framebuffer prepass_target_, max_depth_target_;

@@ -1,15 +1,24 @@
 // One fragment of the per-pixel lists of the coverage-based techniques (DCAA, dynamic coverage):
-// 9 uints (36 bytes) in a shader storage buffer, linked from an R32UI head image (0xffffffff
-// ends a list): next, order, coverage (2), depth at the centre (float), depth slopes (shared
-// exponent), facet normal, then the colour (2). The C++ side (runtime/coverage_lists.cpp) reads
-// the same layout back.
-// With COVERAGE_SHADING_INPUTS (dcaa --shade surface) the last two words hold the shading inputs
-// instead of the colour: `colour` is then the albedo (3 x 10-bit unorm of its square root, clamped
-// to [0, 1]) and `shading_normal` the unit shading normal (octahedral, 2 x snorm16).
+// uints in a shader storage buffer, linked from an R32UI head image (0xffffffff ends a list):
+//   next, primitive order, coverage (2 words; 1 with COVERAGE_NARROW, at most 32 samples),
+//   depth at the centre (float), depth slopes (encode_slopes), facet normal (octahedral),
+//   colour (encode_colour) | with COVERAGE_SHADING_INPUTS (dcaa --shade surface): albedo
+//   (encode_albedo) and shading normal (octahedral).
+// 32 B for DCAA, 36 B shading surfaces, 28 B for dynamic coverage. The C++ side
+// (runtime/coverage_lists.cpp, CoverageFragmentLists::record_bytes) reads the same layout back.
 #ifndef RSAA_COVERAGE_RECORD_GLSL
 #define RSAA_COVERAGE_RECORD_GLSL
 
-const uint COVERAGE_RECORD_UINTS = 9u;  // CoverageFragmentLists::kRecordBytes / 4
+#ifdef COVERAGE_NARROW
+const uint RECORD_DEPTH = 3u;
+#else
+const uint RECORD_DEPTH = 4u;
+#endif
+#ifdef COVERAGE_SHADING_INPUTS
+const uint COVERAGE_RECORD_UINTS = RECORD_DEPTH + 5u;
+#else
+const uint COVERAGE_RECORD_UINTS = RECORD_DEPTH + 4u;
+#endif
 const uint COVERAGE_LIST_END = 0xffffffffu;
 
 layout(std430, binding = 0) coherent buffer CoverageCounter {
@@ -22,9 +31,9 @@ struct CoverageRecord {
   uint next;
   uint order;      // primitive submission order
   uvec2 coverage;  // bits 0-31, 32-63
-  vec3 depth;      // window depth at the pixel centre (float), d/dx, d/dy (pixel space, y down; encode_slopes)
+  vec3 depth;      // window depth at the pixel centre, d/dx, d/dy (pixel space, y down)
   uint normal;     // octahedral, 2 x snorm16
-  vec3 colour;     // linear, 2 x half2; the albedo with COVERAGE_SHADING_INPUTS
+  vec3 colour;     // linear; the albedo with COVERAGE_SHADING_INPUTS
 #ifdef COVERAGE_SHADING_INPUTS
   vec3 shading_normal;
 #endif
@@ -63,6 +72,20 @@ vec2 decode_slopes(uint code) {
   return ldexp(vec2(q), ivec2(e - 128 - 11));
 }
 
+// A linear colour in [0, 4] (the scene's shading stays below 1.25 without point lights) as
+// 11/11/10 bits of the square root of a quarter of it: an 8-bit sRGB output moves by less than
+// 0.3 of a step from it at any level (half floats cost 48 bits; a shared exponent loses the weak
+// channels of saturated colours).
+uint encode_colour(vec3 c) {
+  vec3 e = sqrt(clamp(c * 0.25, 0.0, 1.0));
+  uvec3 q = uvec3(round(e * vec3(2047.0, 2047.0, 1023.0)));
+  return q.r | q.g << 11 | q.b << 22;
+}
+vec3 decode_colour(uint code) {
+  vec3 e = vec3(uvec3(code & 0x7ffu, (code >> 11) & 0x7ffu, code >> 22)) / vec3(2047.0, 2047.0, 1023.0);
+  return 4.0 * e * e;
+}
+
 // An albedo in [0, 1] as 3 x 10 bits of its square root (finer steps in the darks, where the
 // sRGB output is steepest).
 uint encode_albedo(vec3 a) {
@@ -79,16 +102,18 @@ void coverage_store(uint i, CoverageRecord r) {
   coverage_records[b + 0u] = r.next;
   coverage_records[b + 1u] = r.order;
   coverage_records[b + 2u] = r.coverage.x;
+#ifndef COVERAGE_NARROW
   coverage_records[b + 3u] = r.coverage.y;
-  coverage_records[b + 4u] = floatBitsToUint(r.depth.x);
-  coverage_records[b + 5u] = encode_slopes(r.depth.yz);
-  coverage_records[b + 6u] = r.normal;
+#endif
+  b += RECORD_DEPTH;
+  coverage_records[b + 0u] = floatBitsToUint(r.depth.x);
+  coverage_records[b + 1u] = encode_slopes(r.depth.yz);
+  coverage_records[b + 2u] = r.normal;
 #ifdef COVERAGE_SHADING_INPUTS
-  coverage_records[b + 7u] = encode_albedo(r.colour);
-  coverage_records[b + 8u] = encode_unit_vector(r.shading_normal);
+  coverage_records[b + 3u] = encode_albedo(r.colour);
+  coverage_records[b + 4u] = encode_unit_vector(r.shading_normal);
 #else
-  coverage_records[b + 7u] = packHalf2x16(r.colour.rg);
-  coverage_records[b + 8u] = packHalf2x16(vec2(r.colour.b, 0.0));
+  coverage_records[b + 3u] = encode_colour(r.colour);
 #endif
 }
 
@@ -97,14 +122,19 @@ CoverageRecord coverage_load(uint i) {
   CoverageRecord r;
   r.next = coverage_records[b + 0u];
   r.order = coverage_records[b + 1u];
-  r.coverage = uvec2(coverage_records[b + 2u], coverage_records[b + 3u]);
-  r.depth = vec3(uintBitsToFloat(coverage_records[b + 4u]), decode_slopes(coverage_records[b + 5u]));
-  r.normal = coverage_records[b + 6u];
-#ifdef COVERAGE_SHADING_INPUTS
-  r.colour = decode_albedo(coverage_records[b + 7u]);
-  r.shading_normal = decode_unit_vector(coverage_records[b + 8u]);
+#ifdef COVERAGE_NARROW
+  r.coverage = uvec2(coverage_records[b + 2u], 0u);
 #else
-  r.colour = vec3(unpackHalf2x16(coverage_records[b + 7u]), unpackHalf2x16(coverage_records[b + 8u]).x);
+  r.coverage = uvec2(coverage_records[b + 2u], coverage_records[b + 3u]);
+#endif
+  b += RECORD_DEPTH;
+  r.depth = vec3(uintBitsToFloat(coverage_records[b + 0u]), decode_slopes(coverage_records[b + 1u]));
+  r.normal = coverage_records[b + 2u];
+#ifdef COVERAGE_SHADING_INPUTS
+  r.colour = decode_albedo(coverage_records[b + 3u]);
+  r.shading_normal = decode_unit_vector(coverage_records[b + 4u]);
+#else
+  r.colour = decode_colour(coverage_records[b + 3u]);
 #endif
   return r;
 }
