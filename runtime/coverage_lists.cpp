@@ -43,15 +43,6 @@ Normal3 decode_unit_vector(std::uint32_t packed) {
   return {x / len, y / len, z / len};
 }
 
-// coverage_record.glsl's decode_colour: 11/11/10 bits of the square root of a quarter.
-Rgb decode_colour(std::uint32_t code) {
-  const auto channel = [&](int shift, std::uint32_t mask, float steps) {
-    const float e = float((code >> shift) & mask) / steps;
-    return 4.0f * e * e;
-  };
-  return {channel(0, 0x7ffu, 2047.0f), channel(11, 0x7ffu, 2047.0f), channel(22, 0x3ffu, 1023.0f)};
-}
-
 // coverage_record.glsl's decode_albedo: 3 x 10 bits of the square root.
 Rgb decode_albedo(std::uint32_t code) {
   const auto channel = [&](int shift) {
@@ -86,7 +77,7 @@ CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_patte
       height_(height),
       shading_inputs_(shading_inputs),
       narrow_(coverage_pattern.size() <= 32),
-      record_uints_((narrow_ ? 3 : 4) + (shading_inputs ? 5 : 4)),
+      record_uints_((narrow_ ? 3 : 4) + 5),
       lut_(coverage_pattern),
       program_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                  {GL_GEOMETRY_SHADER, gl::shader_source("coverage_fragments.geom")},
@@ -223,7 +214,8 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
           f.albedo = decode_albedo(d[3]);
           f.shading_normal = decode_unit_vector(d[4]);
         } else {
-          f.colour = decode_colour(d[3]);
+          const glm::vec2 rg = glm::unpackHalf2x16(d[3]), b = glm::unpackHalf2x16(d[4]);
+          f.colour = {rg.x, rg.y, b.x};
         }
         list.push_back(f);
       }
@@ -333,6 +325,18 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   timer_.end();
   gl::check("coverage lists: resolve");
+}
+
+DcaaSurfaceShader dcaa_surface_shader(const View& view, const std::vector<PointLight>& point_lights, int x, int y) {
+  const glm::mat4 inverse_projection = glm::inverse(view.projection);
+  const float wx = float(x) + 0.5f, wy = float(view.height - 1 - y) + 0.5f;  // GL window space
+  return [=, &point_lights](const DcaaSurface& s) {
+    const glm::vec4 v = inverse_projection * glm::vec4(wx / float(view.width) * 2.0f - 1.0f,
+                                                       wy / float(view.height) * 2.0f - 1.0f,
+                                                       s.depth.at_centre * 2.0f - 1.0f, 1.0f);
+    return shade_surface(s.albedo, s.shading_normal, {v.x / v.w, v.y / v.w, v.z / v.w}, kSceneSpecularExponent,
+                         kSceneSpecularScale, 1.0f, point_lights);
+  };
 }
 
 CoverageFragmentLists* coverage_lists_of(Technique& technique) {

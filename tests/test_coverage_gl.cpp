@@ -31,21 +31,6 @@ struct Rendered {
   int pixels_over_2 = 0;  // pixels with a channel more than 2/255 apart
 };
 
-// DcaaPixel::resolve's shading of a surface once (dcaa --shade surface), as coverage_resolve.frag
-// does it: the scene's shading at the view position of the surface's depth at the pixel centre.
-DcaaSurfaceShader surface_shader(const View& view, const Scene& scene, int x, int y) {
-  const glm::mat4 inverse_projection = glm::inverse(view.projection);
-  const float wx = float(x) + 0.5f, wy = float(view.height - 1 - y) + 0.5f;  // GL window space
-  return [=, &scene](const DcaaSurface& s) {
-    const glm::vec4 v = inverse_projection * glm::vec4(wx / float(view.width) * 2.0f - 1.0f,
-                                                       wy / float(view.height) * 2.0f - 1.0f,
-                                                       s.depth.at_centre * 2.0f - 1.0f, 1.0f);
-    const Normal3 position{v.x / v.w, v.y / v.w, v.z / v.w};
-    return shade_surface(s.albedo, s.shading_normal, position, kSceneSpecularExponent, kSceneSpecularScale, 1.0f,
-                         scene.point_lights);
-  };
-}
-
 // Renders `technique` and resolves the same fragment lists on the CPU.
 Rendered render_both(const std::string& technique, const Scene& scene, int width, int height,
                      const std::string& rules = TechniqueOptions{}.rules,
@@ -69,7 +54,8 @@ Rendered render_both(const std::string& technique, const Scene& scene, int width
   for (int i = 0; i < width * height; ++i) {
     if (technique == "dcaa") {
       DcaaPixel pixel(dcaa_settings(rules), &lists->lut().pattern(),
-                      shade == "surface" ? surface_shader(view, scene, i % width, i / width) : DcaaSurfaceShader{});
+                      shade == "surface" ? dcaa_surface_shader(view, scene.point_lights, i % width, i / width)
+                                           : DcaaSurfaceShader{});
       for (const CoverageFragment& f : pixels[i]) pixel.insert(f);
       cpu.pixels[i] = pixel.resolve(lists->lut().pattern(), background);
     } else {
