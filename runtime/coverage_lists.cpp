@@ -43,15 +43,6 @@ Normal3 decode_unit_vector(std::uint32_t packed) {
   return {x / len, y / len, z / len};
 }
 
-// coverage_record.glsl's decode_albedo: 3 x 10 bits of the square root.
-Rgb decode_albedo(std::uint32_t code) {
-  const auto channel = [&](int shift) {
-    const float e = float((code >> shift) & 0x3ffu) / 1023.0f;
-    return e * e;
-  };
-  return {channel(0), channel(10), channel(20)};
-}
-
 // coverage_record.glsl's decode_slopes: 12-bit mantissas, a shared exponent.
 std::pair<float, float> decode_slopes(std::uint32_t code) {
   const int e = int(code >> 24);
@@ -77,7 +68,7 @@ CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_patte
       height_(height),
       shading_inputs_(shading_inputs),
       narrow_(coverage_pattern.size() <= 32),
-      record_uints_((narrow_ ? 3 : 4) + 5),
+      record_uints_((narrow_ ? 3 : 4) + (shading_inputs ? 6 : 5)),
       lut_(coverage_pattern),
       program_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                  {GL_GEOMETRY_SHADER, gl::shader_source("coverage_fragments.geom")},
@@ -211,8 +202,9 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
         f.depth = {bits_to_float(d[0]), ddx, ddy};
         f.normal = decode_unit_vector(d[2]);
         if (shading_inputs_) {
-          f.albedo = decode_albedo(d[3]);
-          f.shading_normal = decode_unit_vector(d[4]);
+          const glm::vec2 rg = glm::unpackHalf2x16(d[3]), b = glm::unpackHalf2x16(d[4]);
+          f.albedo = {rg.x, rg.y, b.x};
+          f.shading_normal = decode_unit_vector(d[5]);
         } else {
           const glm::vec2 rg = glm::unpackHalf2x16(d[3]), b = glm::unpackHalf2x16(d[4]);
           f.colour = {rg.x, rg.y, b.x};

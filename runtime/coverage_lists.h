@@ -3,7 +3,7 @@
 // has none, so a geometry pass appends every fragment (shaded once, with its coverage mask from
 // the half-plane LUT, its depth plane and facet normal) to a linked list per pixel with atomics,
 // and the technique's resolve pass replays each list sorted by primitive order. Same result as
-// the interlocked design; the cost is memory proportional to the fragment count (32-36 B per
+// the interlocked design; the cost is memory proportional to the fragment count (32-40 B per
 // fragment + 4 B per pixel, instead of the technique's fixed per-pixel state), and no early
 // merge: every fragment is stored, then sorted.
 #pragma once
@@ -31,7 +31,7 @@ class CoverageFragmentLists {
   CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height, bool shading_inputs = false);
   bool shading_inputs() const { return shading_inputs_; }
   // coverage_record.glsl's layout for these lists: its #defines and the bytes of a record
-  // (36 for 64 samples, 32 for at most 32).
+  // (36 for 64 samples, 32 for at most 32, 4 more with shading inputs).
   std::string record_defines() const;
   int record_bytes() const { return 4 * record_uints_; }
 

@@ -3,11 +3,11 @@
 //   next, primitive order, coverage (2 words; 1 with COVERAGE_NARROW, at most 32 samples),
 //   depth at the centre (float), depth slopes (encode_slopes), facet normal (octahedral),
 //   colour (3 halves in 2 words) | with COVERAGE_SHADING_INPUTS (dcaa --shade surface): albedo
-//   (encode_albedo) and shading normal (octahedral).
-// 36 B for DCAA, 32 B for dynamic coverage. The colour keeps half floats: one word (11/11/10 bits
-// of the square root of a quarter of it) cost 0.13 dB on the default scene and 0.9 dB on the
-// edges and interpenetrating scenes against 64x SSAA, where the images are within 0.3 of an 8-bit
-// step of the reference. The C++ side
+//   (3 halves in 2 words) and shading normal (octahedral).
+// 36 B for DCAA (40 B shading surfaces), 32 B for dynamic coverage. Colour and albedo keep half
+// floats: in one word (11/11/10 or 10/10/10 bits of square roots) they cost 0.13 dB on the
+// default scene and 0.9 dB on the edges and interpenetrating scenes against 64x SSAA, whose
+// images lie within a fraction of an 8-bit step of the reference. The C++ side
 // (runtime/coverage_lists.cpp, CoverageFragmentLists::record_bytes) reads the same layout back.
 #ifndef RSAA_COVERAGE_RECORD_GLSL
 #define RSAA_COVERAGE_RECORD_GLSL
@@ -17,7 +17,11 @@ const uint RECORD_DEPTH = 3u;
 #else
 const uint RECORD_DEPTH = 4u;
 #endif
+#ifdef COVERAGE_SHADING_INPUTS
+const uint COVERAGE_RECORD_UINTS = RECORD_DEPTH + 6u;
+#else
 const uint COVERAGE_RECORD_UINTS = RECORD_DEPTH + 5u;
+#endif
 const uint COVERAGE_LIST_END = 0xffffffffu;
 
 layout(std430, binding = 0) coherent buffer CoverageCounter {
@@ -71,17 +75,6 @@ vec2 decode_slopes(uint code) {
   return ldexp(vec2(q), ivec2(e - 128 - 11));
 }
 
-// An albedo in [0, 1] as 3 x 10 bits of its square root (finer steps in the darks, where the
-// sRGB output is steepest).
-uint encode_albedo(vec3 a) {
-  uvec3 q = uvec3(round(sqrt(clamp(a, 0.0, 1.0)) * 1023.0));
-  return q.r | q.g << 10 | q.b << 20;
-}
-vec3 decode_albedo(uint code) {
-  vec3 e = vec3(uvec3(code, code >> 10, code >> 20) & 0x3ffu) / 1023.0;
-  return e * e;
-}
-
 void coverage_store(uint i, CoverageRecord r) {
   uint b = i * COVERAGE_RECORD_UINTS;
   coverage_records[b + 0u] = r.next;
@@ -95,8 +88,9 @@ void coverage_store(uint i, CoverageRecord r) {
   coverage_records[b + 1u] = encode_slopes(r.depth.yz);
   coverage_records[b + 2u] = r.normal;
 #ifdef COVERAGE_SHADING_INPUTS
-  coverage_records[b + 3u] = encode_albedo(r.colour);
-  coverage_records[b + 4u] = encode_unit_vector(r.shading_normal);
+  coverage_records[b + 3u] = packHalf2x16(r.colour.rg);
+  coverage_records[b + 4u] = packHalf2x16(vec2(r.colour.b, 0.0));
+  coverage_records[b + 5u] = encode_unit_vector(r.shading_normal);
 #else
   coverage_records[b + 3u] = packHalf2x16(r.colour.rg);
   coverage_records[b + 4u] = packHalf2x16(vec2(r.colour.b, 0.0));
@@ -117,8 +111,8 @@ CoverageRecord coverage_load(uint i) {
   r.depth = vec3(uintBitsToFloat(coverage_records[b + 0u]), decode_slopes(coverage_records[b + 1u]));
   r.normal = coverage_records[b + 2u];
 #ifdef COVERAGE_SHADING_INPUTS
-  r.colour = decode_albedo(coverage_records[b + 3u]);
-  r.shading_normal = decode_unit_vector(coverage_records[b + 4u]);
+  r.colour = vec3(unpackHalf2x16(coverage_records[b + 3u]), unpackHalf2x16(coverage_records[b + 4u]).x);
+  r.shading_normal = decode_unit_vector(coverage_records[b + 5u]);
 #else
   r.colour = vec3(unpackHalf2x16(coverage_records[b + 3u]), unpackHalf2x16(coverage_records[b + 4u]).x);
 #endif

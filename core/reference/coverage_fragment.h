@@ -38,8 +38,8 @@ struct CoverageFragment {
   Normal3 normal;  // unit facet normal, facing the viewer
   Rgb colour;      // linear, shaded once for the fragment (dcaa --shade fragment, dyncov)
   // dcaa --shade surface: what the scene's shading needs besides the position (which the depth
-  // plane gives): linear albedo (texture included) and the unit shading normal, facing the viewer
-  // or not (the shading is two-sided).
+  // plane gives): linear albedo (texture included, fetched per fragment as a G-buffer would) and
+  // the unit shading normal, facing the viewer or not (the shading is two-sided).
   Rgb albedo;
   Normal3 shading_normal;
 };
