@@ -176,7 +176,9 @@ void CoverageFragmentLists::bind_for_resolve(GLuint program) const {
 }
 
 double CoverageFragmentLists::bytes_per_pixel() const {
-  return 4.0 + double(capacity_) * record_bytes() / (double(width_) * height_);
+  // The z-prepass keeps a 4x depth buffer (32-bit) and the max-depth image besides.
+  const double prepass = z_prepass_enabled() ? 4 * 4 + 4 : 0;
+  return 4.0 + prepass + double(capacity_) * record_bytes() / (double(width_) * height_);
 }
 
 std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() const {

@@ -53,7 +53,7 @@ class CoverageFragmentLists {
   std::vector<std::vector<CoverageFragment>> read_back() const;
 
   const HalfPlaneLut& lut() const { return lut_; }
-  // Bytes per pixel of the buffers as allocated (heads + record capacity).
+  // Bytes per pixel of the buffers as allocated (heads + record capacity + the z-prepass's).
   double bytes_per_pixel() const;
   std::size_t fragments() const { return fragments_; }
   glm::ivec2 size() const { return {width_, height_}; }
