@@ -21,8 +21,9 @@
 // DCAA_SHADE_SURFACES (dcaa --shade surface, with COVERAGE_SHADING_INPUTS): a surface's colour
 // slot holds its merged albedo and s_shading_normal its merged shading normal; the resolve shades
 // each surface that shows a coverage sample once, at the view position of its depth plane at the
-// pixel centre. A second merge shades both surfaces first and merges colours (a zero shading
-// normal marks a slot already shaded). DcaaPixel with a DcaaSurfaceShader is the oracle.
+// pixel centre. A second merge, or a first merge whose shading normals differ beyond the cone,
+// shades both surfaces first and merges colours (a zero shading normal marks a slot already
+// shaded). DcaaPixel with a DcaaSurfaceShader is the oracle.
 #include "coverage_record.glsl"
 #ifdef DCAA_SHADE_SURFACES
 #include "rsaa_common.glsl"
@@ -181,7 +182,11 @@ void insert_fragment(CoverageRecord r) {
   }
   if (best >= 0) {
 #ifdef DCAA_SHADE_SURFACES
-    if (is_shaded(best)) make_shaded(in_slot);
+    // A shaded slot has a zero shading normal: shaded or not alike, both are shaded first.
+    if (!(dot(s_shading_normal[best], s_shading_normal[in_slot]) > u_cos_normal_threshold)) {
+      make_shaded(best);
+      make_shaded(in_slot);
+    }
 #endif
     merge_into(best, in_slot);
     return;

@@ -142,18 +142,23 @@ TEST(Dcaa, ShadesSurfacesOnceFromMergedAttributes) {
     return f;
   };
   // Two triangles of one surface (aligned facets, disjoint coverage: first merge), 48 and 16
-  // samples: albedo weighted 3:1, shading normals averaged and renormalised, shaded once.
-  DcaaPixel pixel(dcaa_settings("surface"), &pattern, shader);
-  pixel.insert(with_inputs(fragment(0, 0x0000'FFFF'FFFF'FFFFull, 0.5f, 0.0f, {}), 0.8f, 0.2f));
-  EXPECT_EQ(pixel.insert(with_inputs(fragment(1, 0xFFFF'0000'0000'0000ull, 0.5f, 0.0f, {}), 0.4f, -0.2f)),
-            DcaaEvent::Merged);
-  ASSERT_EQ(pixel.surfaces().size(), 1u);
-  const Normal3 n = normalized({0.75f * normalized({0.2f, 0, 1}).x + 0.25f * normalized({-0.2f, 0, 1}).x, 0.0f,
-                                0.75f * normalized({0.2f, 0, 1}).z + 0.25f * normalized({-0.2f, 0, 1}).z});
-  const Rgb c = pixel.resolve(pattern, {0, 0, 1});
-  EXPECT_NEAR(c.r, 0.7f, 1e-6f);
-  EXPECT_NEAR(c.g, n.x, 1e-6f);
-  EXPECT_EQ(pixel.shading_invocations(pattern), 1);
+  // samples, shading normals 5.7 degrees apart: albedo weighted 3:1, shading normals averaged and
+  // renormalised, shaded once. 22.6 degrees apart (beyond the pi/16 cone: a bevel's normals),
+  // each is shaded and the colours are merged.
+  for (float x : {0.05f, 0.2f}) {
+    DcaaPixel pixel(dcaa_settings("surface"), &pattern, shader);
+    pixel.insert(with_inputs(fragment(0, 0x0000'FFFF'FFFF'FFFFull, 0.5f, 0.0f, {}), 0.8f, x));
+    EXPECT_EQ(pixel.insert(with_inputs(fragment(1, 0xFFFF'0000'0000'0000ull, 0.5f, 0.0f, {}), 0.4f, -x)),
+              DcaaEvent::Merged);
+    ASSERT_EQ(pixel.surfaces().size(), 1u);
+    const Normal3 a = normalized({x, 0, 1}), b = normalized({-x, 0, 1});
+    const Normal3 mean = normalized({0.75f * a.x + 0.25f * b.x, 0.0f, 0.75f * a.z + 0.25f * b.z});
+    const bool once = x < 0.1f;
+    const Rgb c = pixel.resolve(pattern, {0, 0, 1});
+    EXPECT_NEAR(c.r, 0.7f, 1e-6f) << x;
+    EXPECT_NEAR(c.g, once ? mean.x : 0.75f * a.x + 0.25f * b.x, 1e-6f) << x;
+    EXPECT_EQ(pixel.shading_invocations(pattern), once ? 1 : 2) << x;
+  }
 
   // Five surfaces at different angles in four slots: the second merge shades both surfaces
   // first and merges their colours (a mean normal would light neither); a hidden surface is

@@ -104,8 +104,12 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
     if (best < 0 || d > best_dot || (d == best_dot && overlap > best_overlap)) best = i, best_dot = d, best_overlap = overlap;
   }
   if (best >= 0) {
-    // Into a surface already shaded (by a second merge): the fragment is shaded first.
-    surfaces_[best] = merge_surfaces(surfaces_[best], surfaces_[best].shaded ? shaded(in) : in);
+    // Shading surfaces, a merge whose shading normals differ beyond the cone (a bevel's normals
+    // extrapolated to the pixel centre) or into a surface already shaded shades both first.
+    const bool bake = shade_ && (surfaces_[best].shaded ||
+                                 !(dot(surfaces_[best].shading_normal, in.shading_normal) > settings_.cos_normal_threshold));
+    if (bake) surfaces_[best] = shaded(surfaces_[best]);
+    surfaces_[best] = merge_surfaces(surfaces_[best], bake ? shaded(in) : in);
     return DcaaEvent::Merged;
   }
   if (int(surfaces_.size()) < settings_.max_surfaces) {

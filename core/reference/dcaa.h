@@ -51,7 +51,10 @@ struct DcaaSurface {
 // at the view position its depth plane gives at the pixel centre (the caller knows the camera: it
 // maps the surface to that position and shades it). A second merge (slots full) joins surfaces
 // that need not be alike (a top face into a side face): shading their mean normal would light
-// neither, so both are shaded first and their colours merged, as fragments' are.
+// neither, so both are shaded first and their colours merged, as fragments' are; so is a first
+// merge whose shading normals differ beyond the cone (fragments of a rounded bevel, whose
+// normals extrapolated to the pixel centre spread far wider than their facets): the specular
+// lobe of their mean is not the mean of their lobes.
 using DcaaSurfaceShader = std::function<Rgb(const DcaaSurface&)>;
 
 // `dcaa --rules`: "paper" = Algorithm 1 as written (DcaaSettings{}); "surface" (the default) =
