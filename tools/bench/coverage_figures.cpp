@@ -119,8 +119,8 @@ Figure dcaa_figure(const FigureOptions& o, const FigureProgress& progress) {
            << fixed(gl_differs.mean_list) << " fragments on average, the longest " << gl_differs.longest_list << ")\n";
 
     // Shading invocations: one per stored fragment shading fragments; shading surfaces, one per
-    // surface that shows a sample plus two per second merge (the CPU reference counts them on
-    // the lists of a dcaa --shade surface frame).
+    // surface that shows a sample plus those a merge that shades both surfaces first makes (the
+    // CPU reference counts them on the lists of a dcaa --shade surface frame).
     {
       if (progress) progress("dcaa " + name + ": shading surfaces once");
       TechniqueOptions per_surface = technique_options("dcaa");
@@ -194,7 +194,7 @@ Figure dcaa_figure(const FigureOptions& o, const FigureProgress& progress) {
   }
   md << "\nShading invocations per pixel and PSNR (dB) against 64x SSAA, surface rules, 4 slots: `dcaa --shade "
         "fragment` shades every stored fragment, `--shade surface` each surface that shows a coverage sample once "
-        "(and both surfaces of a second merge):\n\n| scene | shading fragments: invocations | PSNR | shading surfaces: "
+        "(and both surfaces of a merge that shades them first: a second merge, or shading normals beyond the cone):\n\n| scene | shading fragments: invocations | PSNR | shading surfaces: "
         "invocations | PSNR |\n| --- | --- | --- | --- | --- |\n"
      << shading.str();
   md << "\nChecks:\n\n" << checks.str();
