@@ -196,8 +196,10 @@ namespace rsaa {
 namespace {
 
 TEST_F(CoverageGl, EveryBuiltinSceneAndExtremeSizesGiveFiniteImages) {
+  TechniqueOptions dcaa_per_surface = technique_options("dcaa");
+  dcaa_per_surface.shade = "surface";
   for (const std::string& name : builtin_scene_names())
-    for (const TechniqueOptions& technique : {technique_options("dcaa"), technique_options("dyncov"),
+    for (const TechniqueOptions& technique : {technique_options("dcaa"), dcaa_per_surface, technique_options("dyncov"),
                                               technique_options("agaa", 4), technique_options("agaa", 8)})
       for (auto [w, h] : {std::pair{64, 48}, std::pair{1, 1}, std::pair{3, 2}}) {
         const Scene scene = load_scene("builtin:" + name);
@@ -319,6 +321,9 @@ TEST_F(CoverageGl, EveryTechniqueRendersAScaledSceneTheSame) {
   techniques.push_back(technique_options("agaa", 4));
   techniques.push_back(technique_options("msaa", 4));
   techniques.push_back(technique_options("ssaa", 8));
+  TechniqueOptions dcaa_per_surface = technique_options("dcaa");
+  dcaa_per_surface.shade = "surface";  // the position from the depth plane, shaded in the resolve
+  techniques.push_back(dcaa_per_surface);
   for (const TechniqueOptions& o : rsaa_variants())
     if (o.auth == 0 || o.samples == 4) techniques.push_back(o);
   const auto render = [&](const Scene& s, const TechniqueOptions& o) {
