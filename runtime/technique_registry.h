@@ -37,6 +37,8 @@ struct TechniqueOptions {
   std::string rules = "surface";     // dyncov: surface | seed (core/reference/dynamic_coverage.h);
                                      // dcaa: surface | paper (core/reference/dcaa.h)
   bool z_prepass = false;            // dcaa, dyncov: DCAA's z-prepass (4x MSAA max depth)
+  std::string shade = "fragment";    // dcaa: fragment (each fragment's colour, merged) | surface
+                                     // (each surface shaded once from its merged attributes)
 };
 
 // What a technique registers.

@@ -71,6 +71,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
   cmd->add_option("--agaa-k-pixels", o.agaa_k_pixels,
                   "agaa: characteristic length in pixel footprints at the surface (independent of the units)")
       ->capture_default_str();
+  cmd->add_option("--shade", o.shade,
+                  "dcaa: fragment (each fragment shaded at the pixel centre, colours merged) | surface (fragments "
+                  "carry albedo and shading normal, each visible surface shaded once from its merged attributes)")
+      ->capture_default_str();
   cmd->add_option("--rules", o.rules,
                   "dyncov: surface (merge fragments of one surface, per-sample visibility) | seed (the seed's "
                   "rules as written); dcaa: surface | paper (Algorithm 1 as written)")
