@@ -173,6 +173,53 @@ void check_declared_counts(const std::string& path, const std::string& what, std
   }
 }
 
+// What the post-processing steps rely on and importers do not always give: no null node, mesh or
+// material, every index in range, arrays present for the counts. Walks the nodes without
+// recursion (a chain can be deep) and at most kMaxNodes of them (a cycle would never end).
+std::string broken_structure(const aiScene& scene) {
+  constexpr std::size_t kMaxNodes = std::size_t{1} << 24;
+  if (!scene.mRootNode) return "no root node";
+  for (unsigned k = 0; k < scene.mNumMeshes; ++k) {
+    const aiMesh* mesh = scene.mMeshes ? scene.mMeshes[k] : nullptr;
+    const std::string name = "mesh " + std::to_string(k);
+    if (!mesh) return name + " is null";
+    if (mesh->mNumVertices > 0 && !mesh->mVertices) return name + " has no vertex array";
+    if (mesh->mNumFaces > 0 && !mesh->mFaces) return name + " has no face array";
+    if (mesh->mMaterialIndex >= scene.mNumMaterials) return name + " has material " + std::to_string(mesh->mMaterialIndex);
+  }
+  for (unsigned k = 0; k < scene.mNumMaterials; ++k)
+    if (!scene.mMaterials || !scene.mMaterials[k]) return "material " + std::to_string(k) + " is null";
+  std::vector<const aiNode*> pending{scene.mRootNode};
+  for (std::size_t visited = 0; !pending.empty(); ++visited) {
+    if (visited > kMaxNodes) return "more than " + std::to_string(kMaxNodes) + " nodes";
+    const aiNode* node = pending.back();
+    pending.pop_back();
+    const std::string name = "node '" + std::string(node->mName.C_Str()) + "'";
+    for (unsigned i = 0; i < node->mNumMeshes; ++i)
+      if (!node->mMeshes || node->mMeshes[i] >= scene.mNumMeshes) return name + " refers to a mesh that does not exist";
+    for (unsigned i = 0; i < node->mNumChildren; ++i) {
+      const aiNode* child = node->mChildren ? node->mChildren[i] : nullptr;
+      if (!child) return name + " has a null child";
+      pending.push_back(child);
+    }
+  }
+  return "";
+}
+
+// rsaa lights and frames scenes itself; a file's lights and cameras are dropped before the
+// post-processing, which asserts (aborts the process) on one without a node of its name
+// (assimp's own OpenGEX/camera.ogex and collada.ogex).
+void drop_lights_and_cameras(aiScene& scene) {
+  for (unsigned k = 0; k < scene.mNumLights; ++k) delete scene.mLights[k];
+  delete[] scene.mLights;
+  scene.mLights = nullptr;
+  scene.mNumLights = 0;
+  for (unsigned k = 0; k < scene.mNumCameras; ++k) delete scene.mCameras[k];
+  delete[] scene.mCameras;
+  scene.mCameras = nullptr;
+  scene.mNumCameras = 0;
+}
+
 glm::vec3 material_albedo(const aiMaterial* material) {
   aiColor4D colour(0.8f, 0.8f, 0.8f, 1.0f);
   if (material->Get(AI_MATKEY_BASE_COLOR, colour) != aiReturn_SUCCESS)
@@ -205,13 +252,19 @@ Scene load_model(const std::string& path, ImportMeasurement* measurement) {
     io = new BoundedIOSystem(&budget);
     importer.SetIOHandler(io);  // the importer owns it
     try {
-      // ValidateDataStructure runs first: an importer that builds a broken scene (RAW's
-      // WithTexture.raw: a node whose children are null) is refused with assimp's message
-      // instead of crashing the steps after it (PreTransformVertices segfaulted on it).
-      ai = importer.ReadFile(
-          path, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices |
-                    aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices |
-                    aiProcess_FindDegenerates);
+      // Post-processing runs only on a scene whose structure holds (broken_structure): an
+      // importer that builds a broken one crashed the steps after it (RAW's WithTexture.raw: a
+      // node whose children are null segfaulted PreTransformVertices). Not assimp's
+      // ValidateDataStructure: it also refuses valid files with an empty mesh.
+      ai = importer.ReadFile(path, 0);
+      if (ai) {
+        const std::string broken = broken_structure(*ai);
+        if (!broken.empty()) throw std::runtime_error(what + ": the importer built a broken scene (" + broken + ")");
+        drop_lights_and_cameras(const_cast<aiScene&>(*ai));
+        ai = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                                          aiProcess_GenSmoothNormals | aiProcess_SortByPType |
+                                          aiProcess_JoinIdenticalVertices | aiProcess_FindDegenerates);
+      }
     } catch (const std::bad_alloc&) {
       if (!budget.refused_request())
         throw std::runtime_error(what + ": out of memory while importing (the sizes it declares do "
