@@ -134,6 +134,16 @@ TEST(AtomicFiles, AReaderBetweenTheRenamesOfAKilledRunReadsOneSet) {
   }
 }
 
+// A journal whose temporary is elsewhere (not one a writer makes) is not followed.
+TEST(AtomicFiles, AJournalPointingOutsideTheDirectoryIsNotFollowed) {
+  TempDir dir, elsewhere;
+  test::write_text(dir.file("t.json"), "target");
+  test::write_text(elsewhere.file("x"), "elsewhere");
+  const auto field = [](const std::string& s) { return std::to_string(s.size()) + ":" + s; };
+  test::write_text(dir.file(".rsaa-commit.tmp-1-0.journal"), field(elsewhere.file("x")) + field(dir.file("t.json")));
+  EXPECT_EQ(read_committed_file(dir.file("t.json")), "target");
+}
+
 TEST(AtomicFiles, ATargetThatIsNotAFileIsRefusedBeforeAnythingChanges) {
   TempDir dir;
   test::write_text(dir.file("t.json"), "old");

@@ -286,7 +286,11 @@ std::string read_committed_file(const std::string& path, std::uint64_t max_bytes
     std::vector<std::pair<std::string, std::string>> renames;
     if (!read_journal(it->path().string(), renames)) continue;
     for (const auto& [temporary, target] : renames) {
-      if (fs::path(target).lexically_normal() != wanted) continue;
+      // A writer's temporary is always beside its target: a journal naming another place is
+      // not one of ours and is not followed.
+      if (fs::path(target).lexically_normal() != wanted ||
+          fs::path(temporary).lexically_normal().parent_path() != wanted.parent_path())
+        continue;
       // Renamed in the meantime (or never there): the target holds the committed contents.
       try {
         return read_whole_file(temporary, max_bytes, what);
