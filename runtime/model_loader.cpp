@@ -171,6 +171,12 @@ void check_declared_counts(const std::string& path, const std::string& what, std
       return;
     }
   }
+  // assimp 5.2 loops forever on a header cut inside a property list (40 s until the loader's
+  // time limit): a header must end, with end_header, and headers are small.
+  if (head.compare(0, 3, "ply") == 0)
+    throw std::runtime_error(what + ": the PLY header has no end_header line" +
+                             (file_size > head.size() ? " in its first " + std::to_string(head.size()) + " bytes" : std::string()) +
+                             ": the file is cut or not PLY");
 }
 
 // What the post-processing steps rely on and importers do not always give: no null node, mesh or

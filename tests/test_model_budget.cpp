@@ -76,6 +76,15 @@ TEST(ModelImport, BrokenImporterScenesAreRefusedAndNodelessLightsDropped) {
   EXPECT_GT(load_scene("/usr/share/assimp/models/STL/triangle_with_empty_solid.stl").triangle_count(), 0u);
 }
 
+// A PLY header cut inside a property list made assimp 5.2 loop forever (40 s, the loader's limit).
+TEST(ModelImport, APlyHeaderWithoutEndHeaderIsRefusedAtOnce) {
+  test::TempDir dir;
+  test::write_text(dir.file("cut.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                        "property float z\nelement face 1\nproperty list uchar int vert");
+  const std::string message = refusal(dir.file("cut.ply"));
+  EXPECT_NE(message.find(dir.file("cut.ply") + "': the PLY header has no end_header line"), std::string::npos) << message;
+}
+
 TEST(ModelBudget, ValidModelsStillLoad) {
   for (const char* model : {"/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
                             "/usr/share/assimp/models/X/test.x", "/usr/share/assimp/models/Collada/duck.dae"})

@@ -40,7 +40,8 @@ input gave the right result. What each class feeds:
    PreTransformVertices aborted the process).
 2. **Hangs**: \`/dev/zero\`, \`/dev/urandom\` and FIFOs as images, tables, models, a model's
    texture, a model's .mtl, a CSV, and \`train --generic\` (refused at once: only regular files
-   are read, opened without blocking).
+   are read, opened without blocking); a PLY header cut inside a property list (refused at once:
+   no \`end_header\`; assimp looped on it until the 40 s limit).
 3. **Memory**: PNGs declaring 16384x16384 and 100000x1 pixels in a few bytes, a table over
    16 MiB, assimp's \`OutOfMemory.off\`, an OFF declaring 10^12 vertices, a PLY declaring 4e9,
    a texture declaring 16384x16384 (refused before allocating, naming the file, the declared
@@ -111,8 +112,9 @@ trainer, their tests and the table fuzz loop with AddressSanitizer and Undefined
 ## Known problems left alone
 
 - assimp 5.2.4 (Debian) loops forever on a PLY file whose header is cut inside a property
-  list. \`rsaa render\` and \`rsaa view\` give up after 40 s with an error naming the file
-  (\`load_scene_within\`); the mutation loop leaves PLY out for that reason.
+  list: such a header has no \`end_header\` and is refused at once (class 2); any other loop
+  of an importer ends after 40 s with an error naming the file (\`load_scene_within\`). The
+  mutation loop still leaves PLY out.
 - libpng prints its own messages on stderr for broken PNG files before rsaa's error.
 - Under a process limit, commands that read or write images need room for 4 more threads
   (liblog4cplus, loaded with OpenImageIO's OpenVDB, starts them as it loads and aborts when it

@@ -187,6 +187,8 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
   dir.write("big-table.json", read_whole_file(table) + std::string(17u << 20, ' '));
   dir.write("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
                         "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n");
+  dir.write("cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                       "element face 1\nproperty list uchar int vert");
   dir.write("huge.off", "OFF\n999999999999 1 0\n0 0 0\n");
   // Formats without a pre-scan whose importers trust a declared count (the import's memory budget).
   dir.write("huge.x", "xof 0303txt 0032\nMesh m {\n 1000000000;\n 0.0;0.0;0.0;,\n 1.0;0.0;0.0;,\n 0.0;1.0;0.0;;\n 1;\n 3;0,1,2;;\n}\n");
@@ -268,7 +270,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
       options));
 
   suites.push_back(run_class(
-      "hostile 2, hangs: devices and FIFOs where files are read",
+      "hostile 2, hangs: devices and FIFOs where files are read, a cut PLY header",
       {
           refuse("compare /dev/zero", {"compare", "/dev/zero", f("black.png")}, "/dev/zero"),
           refuse("compare a FIFO", {"compare", f("black.png"), f("fifo.png")}, "fifo.png"),
@@ -280,6 +282,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("a model whose texture is a FIFO", {"render", "--scene", f("fifo-texture.obj"), "--out", f("out-3.png")}, "fifo.png", f("out-3.png")),
           refuse("a model whose material file is a FIFO", {"render", "--scene", f("fifo-mtl.obj"), "--out", f("out-4.png")}, "fifo-mtl.mtl", f("out-4.png")),
           refuse("plot a FIFO", {"plot", f("fifo.csv"), "--x", "a", "--y", "b", "--out", f("out-5.png")}, "fifo.csv", f("out-5.png")),
+          refuse("PLY header cut inside a property list (assimp looped forever)", {"render", "--scene", f("cut.ply"), "--out", f("out-cut.png")}, "end_header", f("out-cut.png")),
           refuse("train --generic a FIFO", {"train", "--from-scene", "builtin:edges", "--generic", f("fifo.json"), "--out-dir", f("tables-fifo")}, "fifo.json"),
       },
       options));
