@@ -1,5 +1,7 @@
 #include "image/image_io.h"
 
+#include <dlfcn.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -7,12 +9,14 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
-
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 #include "core/util/atomic_file.h"
 #include "core/util/colour.h"
+#include "core/util/parallel.h"
+#include "image/oiio_codec.h"
 
 namespace rsaa {
 namespace {
@@ -23,82 +27,56 @@ bool is_float_format(const std::string& path) {
   return ext == ".exr" || ext == ".hdr";
 }
 
-// Where the colour and alpha channels are, from the channel count and OpenImageIO's alpha index.
-struct Layout {
-  int colour_channels = 0;  // 1 (grey) or 3 (RGB)
-  int alpha = -1;           // channel index, -1: none
-  int read_end = 0;         // channels [0, read_end) are read
-};
+// log4cplus (loaded with OpenImageIO through OpenVDB) starts this many threads as it loads and
+// ends the process when it cannot (measured: 4 in liblog4cplus 2.0.8).
+constexpr int kThreadsStartedByTheModule = 4;
 
-Layout layout_of(const std::string& name, const OIIO::ImageSpec& spec) {
-  const int n = spec.nchannels, a = spec.alpha_channel;
-  const auto refuse = [&](const std::string& why) -> Layout {
-    throw std::runtime_error(name + ": " + std::to_string(n) + " channels (" + why +
-                             "); expected grey, grey+alpha, RGB or RGBA");
-  };
-  Layout l;
-  if (n == 1) {
-    l = {1, -1, 1};
-  } else if (n == 2) {
-    if (a != 1) return refuse("two channels, the second not marked as alpha");
-    l = {1, 1, 2};
-  } else if (n >= 3) {
-    if (a >= 0 && a < 3) return refuse("alpha among the first three");
-    if (a >= 8) return refuse("alpha in channel " + std::to_string(a));
-    l = {3, a, a >= 0 ? a + 1 : 3};
-  } else {
-    return refuse("none");
+std::string process_limit_text() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_NPROC, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return "";
+  return " (ulimit -u " + std::to_string(limit.rlim_cur) + ")";
+}
+
+const OiioCodec& load_codec() {
+  if (threads_that_can_start(kThreadsStartedByTheModule) < kThreadsStartedByTheModule)
+    throw std::runtime_error(
+        "images cannot be read or written here: OpenImageIO's logger (log4cplus, loaded with "
+        "OpenVDB) starts " + std::to_string(kThreadsStartedByTheModule) +
+        " threads when it loads and ends the process when it cannot, and the process limit" +
+        process_limit_text() + " leaves no room for them; raise the limit (ulimit -u) or end other processes of this user");
+  std::string tried;
+  for (const char* path : {RSAA_OIIO_MODULE, RSAA_OIIO_MODULE_INSTALLED}) {
+    void* module = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+      tried += std::string(" ") + ::dlerror() + ";";
+      continue;
+    }
+    using Entry = const OiioCodec* (*)();
+    if (const auto entry = reinterpret_cast<Entry>(::dlsym(module, "rsaa_oiio_codec"))) return *entry();
+    tried += std::string(" ") + path + ": no rsaa_oiio_codec;";
   }
-  return l;
+  throw std::runtime_error("cannot load the image module (OpenImageIO):" + tried);
+}
+
+// Loaded once, on first use; a failure is reported again on every use.
+const OiioCodec& codec() {
+  static std::string failure;
+  static const OiioCodec* const loaded = [] () -> const OiioCodec* {
+    try {
+      return &load_codec();
+    } catch (const std::runtime_error& e) {
+      failure = e.what();
+      return nullptr;
+    }
+  }();
+  if (!loaded) throw std::runtime_error(failure);
+  return *loaded;
 }
 
 }  // namespace
 
 DecodedImage decode_image(const std::string& name, const std::string& bytes, const ImageBudget& budget) {
-  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-  OIIO::ImageSpec config;
-  // Straight alpha as stored, so that compositing is done once, here, in linear light.
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(name, &config, &memory);
-  if (!in)
-    throw std::runtime_error(name + ": cannot read " + budget.what + " (" + OIIO::geterror() + ")");
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-    throw std::runtime_error(name + ": " + budget.what + " has no pixels");
-  const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
-  if (spec.width > budget.max_side || spec.height > budget.max_side || pixels > budget.max_pixels)
-    throw LimitError(name + ": " + budget.what + " declares " + std::to_string(spec.width) +
-                             "x" + std::to_string(spec.height) + " pixels; the limit is " +
-                             std::to_string(budget.max_side) + " per side and " +
-                             std::to_string(budget.max_pixels) + " pixels");
-  if (spec.depth > 1) throw std::runtime_error(name + ": volume images are not read");
-  const Layout layout = layout_of(name, spec);
-
-  DecodedImage d;
-  d.width = spec.width;
-  d.height = spec.height;
-  d.float_format = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                   spec.format.basetype == OIIO::TypeDesc::HALF ||
-                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-  d.premultiplied = layout.alpha >= 0 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) == 0;
-  d.rgba.resize(pixels * 4);
-  // A band of rows at a time: the channels read may be more than the four kept.
-  const int band = std::max(1, int((std::size_t{1} << 20) / (std::size_t(spec.width) * layout.read_end)));
-  std::vector<float> rows;
-  for (int y0 = 0; y0 < spec.height; y0 += band) {
-    const int y1 = std::min(spec.height, y0 + band);
-    rows.resize(std::size_t(y1 - y0) * spec.width * layout.read_end);
-    if (!in->read_scanlines(0, 0, spec.y + y0, spec.y + y1, spec.z, 0, layout.read_end,
-                            OIIO::TypeDesc::FLOAT, rows.data()))
-      throw std::runtime_error(name + ": cannot read pixels (" + in->geterror() + ")");
-    for (std::size_t i = 0; i < std::size_t(y1 - y0) * spec.width; ++i) {
-      const float* p = &rows[i * layout.read_end];
-      float* out = &d.rgba[(std::size_t(y0) * spec.width + i) * 4];
-      for (int c = 0; c < 3; ++c) out[c] = p[layout.colour_channels == 3 ? c : 0];
-      out[3] = layout.alpha >= 0 ? p[layout.alpha] : 1.0f;
-    }
-  }
-  return d;
+  return codec().decode(name, bytes, budget);
 }
 
 DecodedImage read_decoded_image(const std::string& path, const ImageBudget& budget) {
@@ -127,37 +105,32 @@ void write_image(const std::string& path, const Image& image) {
   // Keep the extension so that OpenImageIO picks the same format for the temporary file.
   const std::filesystem::path temporary = temporary_path_beside(path);
   remove_stale_temporaries(target.parent_path().empty() ? "." : target.parent_path().string());
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw std::runtime_error(path + ": no image format for this extension");
   const std::size_t n = image.pixels.size();
-  bool ok;
+  std::vector<float> values;
+  DisplayImage display;
   if (linear) {
-    std::vector<float> values(n * 3);
+    values.resize(n * 3);
     for (std::size_t i = 0; i < n; ++i) {
       const Rgb p = image.pixels[i];
       values[3 * i + 0] = std::isfinite(p.r) ? p.r : 0.0f;
       values[3 * i + 1] = std::isfinite(p.g) ? p.g : 0.0f;
       values[3 * i + 2] = std::isfinite(p.b) ? p.b : 0.0f;
     }
-    ok = out->open(temporary.string(), OIIO::ImageSpec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT)) &&
-         out->write_image(OIIO::TypeDesc::FLOAT, values.data());
   } else {
-    const DisplayImage display = to_display(image);
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    ok = out->open(temporary.string(), spec) &&
-         out->write_image(OIIO::TypeDesc::UINT8, display.rgb.data());
+    display = to_display(image);
   }
-  ok = out->close() && ok;
-  if (!ok) {
-    std::filesystem::remove(temporary);
-    throw std::runtime_error(path + ": cannot write image (" + out->geterror() + ")");
+  std::string error;
+  if (!codec().write(path, temporary.string(), image.width, image.height, linear,
+                     linear ? static_cast<const void*>(values.data()) : display.rgb.data(), error)) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error(path + ": cannot write image (" + error + ")");
   }
-  std::error_code error;
-  std::filesystem::rename(temporary, target, error);
-  if (error) {
+  std::error_code rename_error;
+  std::filesystem::rename(temporary, target, rename_error);
+  if (rename_error) {
     std::filesystem::remove(temporary);
-    throw std::runtime_error(path + ": cannot write image (" + error.message() + ")");
+    throw std::runtime_error(path + ": cannot write image (" + rename_error.message() + ")");
   }
 }
 

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 
+#include "core/util/parallel.h"
+
 namespace rsaa::gl {
 namespace {
 
@@ -31,7 +33,12 @@ void require_gl45() {
                   std::to_string(epoxy_gl_version() % 10));
 }
 
+// Threads kept free for what starts after the context: OpenImageIO's logger (4, image_io.cpp)
+// and one loader or worker thread.
+constexpr int kThreadsKeptFree = 5;
+
 HeadlessContext::HeadlessContext() {
+  fit_llvmpipe_threads_to_process_limit(kThreadsKeptFree);
   if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
     throw GlError("EGL lacks EGL_MESA_platform_surfaceless (install libegl-mesa0)");
   EGLDisplay display =

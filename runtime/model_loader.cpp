@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,6 +20,7 @@
 #include "core/util/atomic_file.h"
 #include "core/util/colour.h"
 #include "image/image_io.h"
+#include "runtime/allocation_budget.h"
 #include "runtime/scene.h"
 
 namespace rsaa {
@@ -39,15 +41,26 @@ TextureImage to_texture(const DecodedImage& d) {
   return t;
 }
 
+// What an import may allocate for `input_bytes` of files (docs/reliability.md, Budgets).
+std::uint64_t import_budget(std::uint64_t input_bytes) {
+  return std::min(kImportBytesFloor + kImportBytesPerInputByte * input_bytes, kImportBytesMax);
+}
+
+std::string mib(std::uint64_t bytes) { return std::to_string((bytes + (1u << 19)) >> 20) + " MiB"; }
+
 // Every file assimp opens (the model, and the .mtl, .bin, ... it refers to) must be a regular
 // file within the budget: a FIFO or /dev/zero would block or never end. The reason for a refusal
 // is kept, since assimp reports only that the file could not be opened.
+// Each distinct file opened raises the import's memory budget by its share (kImportBytesPerInputByte).
 class BoundedIOSystem : public Assimp::DefaultIOSystem {
  public:
+  explicit BoundedIOSystem(AllocationBudget* budget) : budget_(budget) {}
   Assimp::IOStream* Open(const char* file, const char* mode) override {
     if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
     try {
-      check_regular_file(file, kMaxModelFileBytes, "model file");
+      const std::uint64_t size = check_regular_file(file, kMaxModelFileBytes, "model file");
+      if (opened_.insert(file).second) input_bytes += size;
+      if (budget_) budget_->raise_limit(import_budget(input_bytes) - budget_->limit());
     } catch (const LimitError& e) {
       if (refusal.empty()) refusal = e.what();
       return nullptr;
@@ -61,7 +74,13 @@ class BoundedIOSystem : public Assimp::DefaultIOSystem {
     struct stat st {};
     return ::stat(file, &st) == 0;
   }
+  void end_budget() { budget_ = nullptr; }
   std::string refusal;
+  std::uint64_t input_bytes = 0;  // of the distinct files opened
+
+ private:
+  AllocationBudget* budget_;
+  std::set<std::string> opened_;
 };
 
 std::string lower_extension(const std::string& path) {
@@ -152,6 +171,59 @@ void check_declared_counts(const std::string& path, const std::string& what, std
       return;
     }
   }
+  // assimp 5.2 loops forever on a header cut inside a property list (40 s until the loader's
+  // time limit): a header must end, with end_header, and headers are small.
+  if (head.compare(0, 3, "ply") == 0)
+    throw std::runtime_error(what + ": the PLY header has no end_header line" +
+                             (file_size > head.size() ? " in its first " + std::to_string(head.size()) + " bytes" : std::string()) +
+                             ": the file is cut or not PLY");
+}
+
+// What the post-processing steps rely on and importers do not always give: no null node, mesh or
+// material, every index in range, arrays present for the counts. Walks the nodes without
+// recursion (a chain can be deep) and at most kMaxNodes of them (a cycle would never end).
+std::string broken_structure(const aiScene& scene) {
+  constexpr std::size_t kMaxNodes = std::size_t{1} << 24;
+  if (!scene.mRootNode) return "no root node";
+  for (unsigned k = 0; k < scene.mNumMeshes; ++k) {
+    const aiMesh* mesh = scene.mMeshes ? scene.mMeshes[k] : nullptr;
+    const std::string name = "mesh " + std::to_string(k);
+    if (!mesh) return name + " is null";
+    if (mesh->mNumVertices > 0 && !mesh->mVertices) return name + " has no vertex array";
+    if (mesh->mNumFaces > 0 && !mesh->mFaces) return name + " has no face array";
+    if (mesh->mMaterialIndex >= scene.mNumMaterials) return name + " has material " + std::to_string(mesh->mMaterialIndex);
+  }
+  for (unsigned k = 0; k < scene.mNumMaterials; ++k)
+    if (!scene.mMaterials || !scene.mMaterials[k]) return "material " + std::to_string(k) + " is null";
+  std::vector<const aiNode*> pending{scene.mRootNode};
+  for (std::size_t visited = 0; !pending.empty(); ++visited) {
+    if (visited > kMaxNodes) return "more than " + std::to_string(kMaxNodes) + " nodes";
+    const aiNode* node = pending.back();
+    pending.pop_back();
+    const std::string name = "node '" + std::string(node->mName.C_Str()) + "'";
+    for (unsigned i = 0; i < node->mNumMeshes; ++i)
+      if (!node->mMeshes || node->mMeshes[i] >= scene.mNumMeshes) return name + " refers to a mesh that does not exist";
+    for (unsigned i = 0; i < node->mNumChildren; ++i) {
+      const aiNode* child = node->mChildren ? node->mChildren[i] : nullptr;
+      if (!child) return name + " has a null child";
+      pending.push_back(child);
+    }
+  }
+  return "";
+}
+
+// rsaa lights and frames scenes itself; a file's lights and cameras are dropped before the
+// post-processing, which asserts (aborts the process) on one without a node of its name
+// (assimp's own OpenGEX/camera.ogex and collada.ogex).
+void drop_lights_and_cameras(aiScene& scene) {
+  for (unsigned k = 0; k < scene.mNumLights; ++k) delete scene.mLights[k];
+  delete[] scene.mLights;
+  scene.mLights = nullptr;
+  scene.mNumLights = 0;
+  for (unsigned k = 0; k < scene.mNumCameras; ++k) delete scene.mCameras[k];
+  delete[] scene.mCameras;
+  scene.mCameras = nullptr;
+  scene.mNumCameras = 0;
 }
 
 glm::vec3 material_albedo(const aiMaterial* material) {
@@ -165,7 +237,7 @@ glm::vec3 material_albedo(const aiMaterial* material) {
 
 }  // namespace
 
-Scene load_model(const std::string& path) {
+Scene load_model(const std::string& path, ImportMeasurement* measurement) {
   const std::string what = "model '" + path + "'";
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw std::runtime_error(what + ": file not found");
@@ -177,16 +249,45 @@ Scene load_model(const std::string& path) {
   }
   check_declared_counts(path, what, file_size);
   Assimp::Importer importer;
-  auto* io = new BoundedIOSystem;
-  importer.SetIOHandler(io);  // the importer owns it
   const aiScene* ai = nullptr;
-  try {
-    ai = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
-                  aiProcess_SortByPType | aiProcess_JoinIdenticalVertices | aiProcess_FindDegenerates);
-  } catch (const std::bad_alloc&) {
-    throw std::runtime_error(what + ": out of memory while importing (the sizes it declares do "
-                             "not fit in the memory available)");
+  BoundedIOSystem* io = nullptr;
+  {
+    // Only the import is under the budget: what it allocates is what the file declares. The
+    // scene it returns is freed with the importer, after the budget has ended.
+    AllocationBudget budget(import_budget(0));
+    io = new BoundedIOSystem(&budget);
+    importer.SetIOHandler(io);  // the importer owns it
+    try {
+      // Post-processing runs only on a scene whose structure holds (broken_structure): an
+      // importer that builds a broken one crashed the steps after it (RAW's WithTexture.raw: a
+      // node whose children are null segfaulted PreTransformVertices). Not assimp's
+      // ValidateDataStructure: it also refuses valid files with an empty mesh.
+      ai = importer.ReadFile(path, 0);
+      if (ai) {
+        const std::string broken = broken_structure(*ai);
+        if (!broken.empty()) throw std::runtime_error(what + ": the importer built a broken scene (" + broken + ")");
+        drop_lights_and_cameras(const_cast<aiScene&>(*ai));
+        ai = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                                          aiProcess_GenSmoothNormals | aiProcess_SortByPType |
+                                          aiProcess_JoinIdenticalVertices | aiProcess_FindDegenerates);
+      }
+    } catch (const std::bad_alloc&) {
+      if (!budget.refused_request())
+        throw std::runtime_error(what + ": out of memory while importing (the sizes it declares do "
+                                 "not fit in the memory available)");
+    }
+    if (measurement) *measurement = {io->input_bytes, budget.peak()};
+    // Refused even when the importer went on without what it could not allocate: the scene
+    // would be missing parts.
+    if (budget.refused_request())
+      throw std::runtime_error(
+          what + ": importing it would take more memory than its budget of " + mib(budget.limit()) +
+          " (" + mib(kImportBytesFloor) + " + " + std::to_string(kImportBytesPerInputByte) +
+          " bytes per byte of its " + std::to_string(io->input_bytes) + " bytes of files, at most " +
+          mib(kImportBytesMax) + "): the importer asked for " + std::to_string(budget.refused_request()) +
+          " bytes with " + mib(std::uint64_t(std::max<std::int64_t>(0, budget.live_when_refused()))) +
+          " in use; the file declares more than it holds");
+    io->end_budget();
   }
   // A file the model refers to that was refused (a FIFO, a device, over the budget) refuses
   // the model too, even when the importer would go on without it.

@@ -59,6 +59,14 @@ const std::vector<std::string>& builtin_scene_names();
 // the vertices and faces copied out of the importer, and the texels of all its textures (each
 // texture also within kTextureBudget of image/image_io.h).
 constexpr std::uint64_t kMaxModelFileBytes = std::uint64_t{256} << 20;
+// What assimp may allocate while importing a model (runtime/allocation_budget.h): a floor, plus
+// so much per byte of the files it reads (the model and the files it refers to), at most
+// kImportBytesMax. Measured over the 320 models in /usr/share/assimp/models that load: at most
+// 219 MiB (a 86 KB .blend with subdivision; a 2.7 KB .ac with subdivision: 213 MiB), and about
+// 16 MiB of assimp's own for any file (tests/test_model_budget.cpp measures it).
+constexpr std::uint64_t kImportBytesFloor = std::uint64_t{512} << 20;
+constexpr std::uint64_t kImportBytesPerInputByte = 64;
+constexpr std::uint64_t kImportBytesMax = std::uint64_t{4} << 30;
 constexpr std::uint64_t kMaxSceneVertices = std::uint64_t{1} << 24;
 constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t{1} << 25;
 constexpr std::uint64_t kMaxSceneTexels = std::uint64_t{1} << 26;
@@ -89,7 +97,13 @@ Scene load_scene(const std::string& spec);
 Scene load_scene_within(const std::string& spec, double seconds);
 
 Scene builtin_scene(const std::string& name);
-Scene load_model(const std::string& path);
+// What an import took (for the budget's measurement, tests/test_model_budget.cpp): the bytes
+// of the files it read and the most memory it held at once.
+struct ImportMeasurement {
+  std::uint64_t input_bytes = 0;
+  std::int64_t peak_bytes = 0;
+};
+Scene load_model(const std::string& path, ImportMeasurement* measurement = nullptr);
 
 // The scene with every position, and its built-in camera (eye, target, near and far), multiplied
 // by `factor` (> 0, finite): the same picture in other units, for the tests that a technique's

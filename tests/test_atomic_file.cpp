@@ -98,6 +98,52 @@ TEST(AtomicFiles, ARunKilledAmongItsRenamesIsFinishedByTheNext) {
   EXPECT_EQ(files_in(dir.path()), 4u) << "temporaries, backups or the journal left behind";
 }
 
+// A reader between the renames of a killed writer: with nothing written since, it reads the set
+// as the dead run's journal finishes it (never old and new files mixed), for a kill at the first
+// rename (nothing replaced yet) and at the second (the JSON replaced).
+TEST(AtomicFiles, AReaderBetweenTheRenamesOfAKilledRunReadsOneSet) {
+  for (int dies_at : {1, 2, 3}) {
+    TempDir dir;
+    OffsetTable old_table = fallback_table(builtin_pattern("d3d4x")), new_table = old_table;
+    new_table.offsets[5] = {0.25, -0.5};
+    write_offset_table_files(old_table, dir.path());
+    const pid_t child = fork();
+    if (child == 0) {
+      int calls = 0;
+      const RenameFn dies = [&](const std::string& from, const std::string& to, std::string&) {
+        if (++calls == dies_at) _exit(9);
+        return std::rename(from.c_str(), to.c_str()) == 0;
+      };
+      const std::string base = dir.file("d3d4x");
+      write_files_atomically({{base + ".json", offset_table_json(new_table)},
+                              {base + ".glsl", offset_table_glsl(new_table)},
+                              {base + ".hlsl", offset_table_hlsl(new_table)}},
+                             dies);
+      _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 9) << "the child did not die among its renames";
+    // On disk the set is mixed (after the first rename) or old; read, it is the new one.
+    const OffsetTable read = read_offset_table(dir.file("d3d4x.json"));
+    EXPECT_EQ(read.offsets[5], new_table.offsets[5]) << "killed at rename " << dies_at;
+    EXPECT_EQ(read_committed_file(dir.file("d3d4x.glsl")), offset_table_glsl(new_table));
+    EXPECT_EQ(read_committed_file(dir.file("d3d4x.hlsl")), offset_table_hlsl(new_table));
+    // Reading wrote nothing: the dead run's temporaries and journal are still there.
+    EXPECT_GT(files_in(dir.path()), 3u);
+  }
+}
+
+// A journal whose temporary is elsewhere (not one a writer makes) is not followed.
+TEST(AtomicFiles, AJournalPointingOutsideTheDirectoryIsNotFollowed) {
+  TempDir dir, elsewhere;
+  test::write_text(dir.file("t.json"), "target");
+  test::write_text(elsewhere.file("x"), "elsewhere");
+  const auto field = [](const std::string& s) { return std::to_string(s.size()) + ":" + s; };
+  test::write_text(dir.file(".rsaa-commit.tmp-1-0.journal"), field(elsewhere.file("x")) + field(dir.file("t.json")));
+  EXPECT_EQ(read_committed_file(dir.file("t.json")), "target");
+}
+
 TEST(AtomicFiles, ATargetThatIsNotAFileIsRefusedBeforeAnythingChanges) {
   TempDir dir;
   test::write_text(dir.file("t.json"), "old");

@@ -19,9 +19,17 @@ OffsetTable small_table() {
   return t;
 }
 
-// Replaces the first occurrence of `from` in the JSON text of the small table.
+// The JSON text without its set id line: a table as written by hand, whose fields are then
+// checked one by one (with the id, any edit is refused as not matching it).
+std::string without_set_id(std::string text) {
+  const std::size_t at = text.find("  \"set_id\"");
+  EXPECT_NE(at, std::string::npos);
+  return text.erase(at, text.find('\n', at) + 1 - at);
+}
+
+// Replaces the first occurrence of `from` in the JSON text of the small table (no set id).
 std::string edited(const std::string& from, const std::string& to) {
-  std::string text = offset_table_json(small_table());
+  std::string text = without_set_id(offset_table_json(small_table()));
   const std::size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   return text.replace(at, from.size(), to);
@@ -71,6 +79,44 @@ TEST(OffsetTableJson, RejectsBrokenFiles) {
   expect_rejected(edited("[-0.125, -0.375]", "[-0.125, -0.4]"), "does not match the built-in");
   expect_rejected(edited("[-0.125, -0.375], ", ""), "pattern d3d4x has 4 samples");
   expect_rejected(edited("\"training\": {", "\"training\": 3, \"x\": {"), "training: expected an object");
+}
+
+// The set id: the same in the three files, a function of the contents, checked by the reader.
+TEST(OffsetTableJson, TheSetIdIsTheContentsAndAnEditIsRefused) {
+  const OffsetTable t = small_table();
+  const std::string id = table_set_id(t);
+  ASSERT_EQ(id.size(), 16u);
+  EXPECT_NE(offset_table_json(t).find("\"set_id\": \"" + id + "\""), std::string::npos);
+  EXPECT_NE(offset_table_glsl(t).find("// Table set id: " + id), std::string::npos);
+  EXPECT_NE(offset_table_hlsl(t).find("// Table set id: " + id), std::string::npos);
+  OffsetTable other = t;
+  other.offsets[3].x = 0.125;
+  EXPECT_NE(table_set_id(other), id);
+  // An edit of a table that carries its id: refused, naming the field.
+  std::string text = offset_table_json(t);
+  text.replace(text.find("0.123456"), 8, "0.125");
+  expect_rejected(text, "set_id: is \"" + id + "\" but the contents give");
+  // The same edit without the id: a hand-written table, read alone.
+  EXPECT_NO_THROW(parse_offset_table(without_set_id(text), "hand.json"));
+}
+
+// A set mixed by hand (a .glsl of another write beside the JSON) is refused naming the file;
+// one without its shader files is read alone.
+TEST(OffsetTableFiles, AMixedSetIsRefusedNamingTheFileOfAnotherWrite) {
+  test::TempDir dir;
+  OffsetTable other = small_table();
+  other.offsets[3].x = 0.125;
+  write_offset_table_files(small_table(), dir.path());
+  test::write_text(dir.file("d3d4x.hlsl"), offset_table_hlsl(other));
+  try {
+    read_offset_table(dir.file("d3d4x.json"));
+    ADD_FAILURE() << "a mixed set was read";
+  } catch (const TableError& e) {
+    EXPECT_NE(std::string(e.what()).find(dir.file("d3d4x.hlsl") + " is not of the same write as"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(dir.file("d3d4x.hlsl"));
+  std::filesystem::remove(dir.file("d3d4x.glsl"));
+  EXPECT_EQ(read_offset_table(dir.file("d3d4x.json")).offsets[3], small_table().offsets[3]);
 }
 
 TEST(OffsetTableJson, CustomPatternsCarryTheirSamples) {

@@ -31,18 +31,31 @@ input gave the right result. What each class feeds:
 1. **Crashes**: \`view --screenshot\` patterns \`x%n.png\`, \`%s%s%s\`, \`shot-%\` (refused: the
    program expands \`%d\` and \`%%\` itself, never printf); a glTF node chain 20,000 deep
    (renders: the loader thread has a 512 MiB stack); \`train --threads 64\` with RLIMIT_NPROC 6
-   as nobody (threads fail to start; the table is the same as with one thread).
+   as nobody (threads fail to start; the table is the same as with one thread); \`eval-table\`
+   with RLIMIT_NPROC 1 (runs: it used to abort before main, see below); \`render\` with
+   RLIMIT_NPROC 3 (renders on one thread, then refuses to write the PNG naming \`ulimit -u\`);
+   assimp's own \`RAW/WithTexture.raw\`, whose importer builds nodes with null children
+   (refused, naming the node: it segfaulted in PreTransformVertices), and \`OpenGEX/camera.ogex\`,
+   whose lights and cameras have no node (renders without them: an assertion in
+   PreTransformVertices aborted the process).
 2. **Hangs**: \`/dev/zero\`, \`/dev/urandom\` and FIFOs as images, tables, models, a model's
    texture, a model's .mtl, a CSV, and \`train --generic\` (refused at once: only regular files
-   are read, opened without blocking).
+   are read, opened without blocking); a PLY header cut inside a property list (refused at once:
+   no \`end_header\`; assimp looped on it until the 40 s limit).
 3. **Memory**: PNGs declaring 16384x16384 and 100000x1 pixels in a few bytes, a table over
    16 MiB, assimp's \`OutOfMemory.off\`, an OFF declaring 10^12 vertices, a PLY declaring 4e9,
    a texture declaring 16384x16384 (refused before allocating, naming the file, the declared
-   size and the limit).
+   size and the limit); a DirectX \`.x\` and an ASE file declaring 10^9 vertices and a Collada
+   \`float_array\` of 10^9 in a few hundred bytes (refused by the import's memory budget before
+   the importer allocates, naming the file, the budget and the request).
 4. **Mixed or stray output**: two \`rsaa train\` runs into one \`--out-dir\` at once, with a
    dead run's temporary file beside them (one holds the directory, the other is refused at
    once naming it; the three files agree; the stale temporary is gone), and a train whose
-   third file cannot be replaced (the first two keep their previous contents).
+   third file cannot be replaced (the first two keep their previous contents), and a run
+   killed at its second rename (the next write finishes its commit from its journal); readers
+   of a set: \`eval-table\` of a JSON whose \`.glsl\` is of another write (refused, naming the
+   \`.glsl\`), and \`render --table\` of a set whose writer died between its renames, nothing
+   written since (renders with the set the dead run's journal commits).
 5. **Injection and escape**: pattern names with a newline, \`../\` and \`/\`, a table whose
    pattern is \`custom-../../x\` (refused: a name is letters, digits, '-' and '_').
 6. **Silently wrong**: all-NaN and all-Inf EXRs compared with black (refused: PSNR and SSIM
@@ -68,15 +81,25 @@ the declared size and the limit:
 | texture of a model | file 256 MiB; 8192 per side, 2^24 pixels each, 2^26 texels per model |
 | model file and every file it refers to (.mtl, .bin) | 256 MiB, regular files only |
 | model contents | 2^24 vertices, 2^25 faces; OFF and PLY header counts against the file size |
-| scene coordinates | \|x\| <= 1e9, extent >= 1e-5 and >= 1e-4 of its distance from the origin (measured: a model renders as at unit scale from 1e-5 to 3e9) |
+| model import (every format) | assimp may allocate 512 MiB + 64 bytes per byte of the files it reads (model, .mtl, .bin...), at most 4 GiB; every operator new on the loading thread is checked before it allocates (\`runtime/allocation_budget.h\`). Measured over the 320 models of /usr/share/assimp/models that load: at most 219 MiB (a subdivided 86 KB .blend), about 16 MiB for any small file (\`build/tests/test_model_budget --gtest_also_run_disabled_tests --gtest_filter='*Measure*'\`) |
+| scene coordinates | \\|x\\| <= 1e9, extent >= 1e-5 and >= 1e-4 of its distance from the origin (measured: a model renders as at unit scale from 1e-5 to 3e9) |
 | scene loading | 40 s; loader thread stack 512 MiB (smaller under an address-space limit); deeper nesting ends the process with a message naming the scene |
 | CSV (\`plot\`) | 64 MiB |
 | \`--threads\` | 0 to 1024 |
+| threads | under a process limit (\`ulimit -u\`), worker threads that cannot start are done without; llvmpipe gets \`LP_NUM_THREADS\` = what fits (0: rasterizing on the calling thread; it waited forever for a missing thread); OpenImageIO is loaded (dlopen) only to read or write an image, after checking that its logger's 4 threads can start |
 
 Images are read by their channel layout: grey, grey+alpha, RGB, RGBA (channels after RGB(A)
 are ignored, other layouts refused). Alpha is composited over black: straight alpha (PNG) scales
 the linear colour, premultiplied alpha (EXR) already has. Out of memory despite the budgets is
 reported as an error naming the address-space limit, never a kill.
+
+A table set (\`P.json\`, \`P.glsl\`, \`P.hlsl\`) carries one id in all three files: the JSON's
+\`set_id\` and a \`// Table set id:\` line in the shader files, 16 hex digits of a hash of the
+JSON's contents (so the same table still gives the same bytes). Reading \`P.json\` checks that
+its contents give its id and that the \`.glsl\` and \`.hlsl\` beside it carry the same; files are
+read through a commit journal in their directory (a writer killed between its renames, or one
+renaming now, is read as its commit finishes). A JSON without \`set_id\` (written by hand) is
+read alone; an engine can compare the id of the files it includes with the JSON it loads.
 
 Other checks of the same kind live in the test suite: GLSL SADP, depth measure, code
 compression and classification at the extremes (tests/test_glsl_extremes.cpp), the CPU and GL
@@ -89,16 +112,29 @@ trainer, their tests and the table fuzz loop with AddressSanitizer and Undefined
 ## Known problems left alone
 
 - assimp 5.2.4 (Debian) loops forever on a PLY file whose header is cut inside a property
-  list. \`rsaa render\` and \`rsaa view\` give up after 40 s with an error naming the file
-  (\`load_scene_within\`); the mutation loop leaves PLY out for that reason.
+  list: such a header has no \`end_header\` and is refused at once (class 2); any other loop
+  of an importer ends after 40 s with an error naming the file (\`load_scene_within\`). The
+  mutation loop still leaves PLY out.
 - libpng prints its own messages on stderr for broken PNG files before rsaa's error.
-- Under RLIMIT_NPROC below 5, rsaa cannot start: liblog4cplus (loaded with OpenImageIO's
-  OpenVDB) starts threads in its static initialiser, before main, and aborts when it cannot.
+- Under a process limit, commands that read or write images need room for 4 more threads
+  (liblog4cplus, loaded with OpenImageIO's OpenVDB, starts them as it loads and aborts when it
+  cannot; measured with gdb on \`pthread_create\`): they refuse with a message naming
+  \`ulimit -u\` (\`render\` with RLIMIT_NPROC 4 or less); from 5, everything runs. Another process
+  of the user starting between the check and the load can still make it abort. Loading a
+  scene needs one thread (the loader): with RLIMIT_NPROC 1, \`render\` refuses naming it.
 - A model nested deeper than the loader's stack (a glTF node chain of 1.5 million levels)
   ends the whole process with "nested too deeply", naming the scene, also for programs that
   load scenes in-process (rsaa_reliability).
-- \`kill -9\` in the microseconds between the three renames of a table set can still leave a
-  mixed set; the next write removes the dead run's temporaries but does not restore from them.
+- \`kill -9\` in the microseconds between the three renames of a table set leaves a mixed set
+  on disk until the next write into that directory (any \`rsaa train\` or \`rsaa shaders\` there,
+  or any write_files_atomically), which finishes the dead run's renames from its commit journal
+  (\`.rsaa-commit.tmp-PID-N.journal\`, written once every temporary is in place) before anything
+  else (test \`AtomicFiles.ARunKilledAmongItsRenamesIsFinishedByTheNext\`). rsaa's readers read
+  the set through the journal in between (test
+  \`AtomicFiles.AReaderBetweenTheRenamesOfAKilledRunReadsOneSet\`); a program that reads the
+  files directly can see the mix, and tell by their set ids.
+- The import budget counts what assimp allocates with operator new (nearly all of it); its
+  few malloc calls (zlib, embedded image decoders) are outside it.
 - \`rsaa bench\` measures renders in memory: a technique that rendered NaN would show PSNR
   and SSIM as nan in its report (undefined, not refused).
 MD

@@ -1,9 +1,12 @@
 #include "core/rsaa/offset_table.h"
 
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
+#include <thread>
 
 #include "core/util/atomic_file.h"
 #include "core/rsaa/conventions.h"
@@ -13,6 +16,10 @@ namespace rsaa {
 namespace {
 
 using nlohmann::json;
+
+// The line of the shader files that carries the set id (also the JSON's "set_id").
+constexpr const char* kSetIdPrefix = "// Table set id: ";
+constexpr const char* kSetIdSuffix = " (one write: the same id in ";
 
 constexpr const char* kMaskBitText = "bit i set = subsample i is similar to the pixel centre";
 
@@ -138,7 +145,10 @@ OffsetTable fallback_table(const SamplePattern& pattern) {
   return table;
 }
 
-OffsetTable parse_offset_table(const std::string& text, const std::string& origin) {
+namespace {
+
+// The table, and in `set_id` the id the JSON carries ("" when it has none).
+OffsetTable parse_table(const std::string& text, const std::string& origin, std::string& set_id) {
   const Reader reader(origin);
   json root;
   try {
@@ -205,27 +215,94 @@ OffsetTable parse_offset_table(const std::string& text, const std::string& origi
   const json& training = reader.field(root, "training");
   if (!training.is_object()) reader.fail("training", "expected an object");
   table.training = training;
+  // Checked last, so that a broken field is named as such. A JSON without an id (written by
+  // hand) is read alone; one with an id must be the table that id was made from.
+  set_id.clear();
+  if (root.contains("set_id")) {
+    set_id = reader.string_field(root, "set_id");
+    const std::string expected = table_set_id(table);
+    if (set_id != expected)
+      reader.fail("set_id", "is " + json(set_id).dump() + " but the contents give \"" + expected +
+                                "\": the file was changed after it was written, so its .glsl and "
+                                ".hlsl may not match it; write the three again (rsaa train) or "
+                                "remove set_id");
+  }
   return table;
 }
 
-OffsetTable read_offset_table(const std::string& path) {
-  std::string text;
-  try {
-    text = read_whole_file(path, kMaxTableFileBytes, "table");
-  } catch (const std::runtime_error& e) {
-    throw TableError(e.what());
-  }
-  return parse_offset_table(text, path);
+// The id in the header of a shader table file, "" when there is none.
+std::string shader_set_id(const std::string& text) {
+  const std::size_t at = text.find(kSetIdPrefix);
+  if (at == std::string::npos || at > 4096) return "";
+  const std::size_t start = at + std::char_traits<char>::length(kSetIdPrefix);
+  return text.substr(start, std::min<std::size_t>(16, text.size() - start));
 }
 
-std::string offset_table_json(const OffsetTable& table) {
-  // Hand-laid so that each entry is one line; values go through nlohmann for exact escaping
-  // and shortest round-trip numbers.
+// Why the .glsl and .hlsl beside `json_path` are not of the same write as it (id `set_id`);
+// "" when they are or are absent.
+std::string set_mismatch(const std::string& json_path, const std::string& set_id) {
+  const std::string suffix = ".json";
+  if (json_path.size() <= suffix.size() || json_path.compare(json_path.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return "";
+  const std::string base = json_path.substr(0, json_path.size() - suffix.size());
+  for (const char* ext : {".glsl", ".hlsl"}) {
+    const std::string sibling = base + ext;
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(sibling, ec))) continue;
+    std::string text;
+    try {
+      text = read_committed_file(sibling, kMaxTableFileBytes, "table");
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    const std::string id = shader_set_id(text);
+    if (id != set_id)
+      return sibling + " is not of the same write as " + json_path + " (" +
+             (id.empty() ? std::string("it has no set id") : "set id " + id) + ", the JSON's is " + set_id +
+             "): the three table files are not one set; write them again (rsaa train)";
+  }
+  return "";
+}
+
+}  // namespace
+
+OffsetTable parse_offset_table(const std::string& text, const std::string& origin) {
+  std::string set_id;
+  return parse_table(text, origin, set_id);
+}
+
+OffsetTable read_offset_table(const std::string& path) {
+  // Files are read as the commit in progress or interrupted in their directory intends
+  // (read_committed_file); a mix seen while another run is between its journal and its renames
+  // is read again a few times before it is refused.
+  for (int attempt = 0;; ++attempt) {
+    std::string text;
+    try {
+      text = read_committed_file(path, kMaxTableFileBytes, "table");
+    } catch (const std::runtime_error& e) {
+      throw TableError(e.what());
+    }
+    std::string set_id;
+    OffsetTable table = parse_table(text, path, set_id);
+    if (set_id.empty()) return table;
+    const std::string mixed = set_mismatch(path, set_id);
+    if (mixed.empty()) return table;
+    if (attempt == 4) throw TableError(path + ": " + mixed);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+namespace {
+
+// The JSON text, with the set id line when `set_id` is not empty. Hand-laid so that each entry
+// is one line; values go through nlohmann for exact escaping and shortest round-trip numbers.
+std::string table_json_text(const OffsetTable& table, const std::string& set_id) {
   std::ostringstream out;
   const auto pair_text = [](Vec2 p) { return "[" + number_text(p.x) + ", " + number_text(p.y) + "]"; };
   out << "{\n";
   out << "  \"format\": \"rsaa-offset-table\",\n";
   out << "  \"version\": 1,\n";
+  if (!set_id.empty()) out << "  \"set_id\": \"" << set_id << "\",\n";
   out << "  \"pattern\": " << json(table.pattern.name).dump() << ",\n";
   out << "  \"y_axis\": \"down\",\n";
   out << "  \"samples\": [";
@@ -253,6 +330,20 @@ std::string offset_table_json(const OffsetTable& table) {
   return out.str();
 }
 
+}  // namespace
+
+std::string table_set_id(const OffsetTable& table) {
+  // FNV-1a, 64 bits, of the JSON text without its id: a function of the contents only, so the
+  // same table gives the same id (byte-identical files) and another table another id.
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  for (unsigned char c : table_json_text(table, "")) hash = (hash ^ c) * 0x100000001b3ull;
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(hash));
+  return buffer;
+}
+
+std::string offset_table_json(const OffsetTable& table) { return table_json_text(table, table_set_id(table)); }
+
 namespace {
 
 // The shared layout of both shader includes; `vec2` and `y_sign` select the language.
@@ -277,6 +368,7 @@ std::string shader_table(const OffsetTable& table, bool glsl) {
   out << "// rsaa offset table, pattern " << name << ": " << samples << " subsamples, " << n
       << " masks. Generated file, do not edit.\n";
   out << "// Generated by: " << generated_by(table) << "\n";
+  out << kSetIdPrefix << table_set_id(table) << kSetIdSuffix << name << ".json, .glsl and .hlsl)\n";
   out << "// Index: the similarity mask, bit i set = subsample i is similar to the pixel centre.\n";
   if (glsl)
     out << "// Y CONVENTION: OpenGL window space, +y UP. Every offset and sample position here is\n"

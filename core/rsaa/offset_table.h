@@ -47,9 +47,19 @@ class TableError : public std::runtime_error {
 };
 
 // Reads and validates a table (format, version, pattern, samples, entry counts, finite offsets
-// within [-1, 1], sources, case counts). `origin` names the file in error messages.
+// within [-1, 1], sources, case counts, and the set id when there is one: it must be the id of
+// the contents). `origin` names the file in error messages.
 OffsetTable parse_offset_table(const std::string& text, const std::string& origin);
+// The same from a file P.json; the P.glsl and P.hlsl beside it, where they exist, must carry
+// the JSON's set id (one write), else a TableError names the file that is not of the set. Reads
+// through a commit journal (read_committed_file): a set whose writer was killed among its
+// renames is read as that commit finishes it.
 OffsetTable read_offset_table(const std::string& path);
+
+// The id written in all three files of a table (JSON "set_id", a "// Table set id:" line in the
+// GLSL and HLSL): 16 hex digits of a hash of the JSON's contents, so the same table gives the
+// same bytes and a file of another write another id.
+std::string table_set_id(const OffsetTable& table);
 
 // File texts. Deterministic: the same table gives the same bytes.
 std::string offset_table_json(const OffsetTable& table);

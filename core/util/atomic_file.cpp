@@ -124,9 +124,8 @@ std::string journal_text(const std::vector<std::string>& temporaries,
   return text;
 }
 
-// Finishes the renames a dead run's journal lists (the temporaries still there); false when the
-// journal cannot be read or parsed (it is then left for a person to look at).
-bool roll_forward(const std::string& journal) {
+// The (temporary, target) pairs a journal lists; false when it cannot be read or parsed.
+bool read_journal(const std::string& journal, std::vector<std::pair<std::string, std::string>>& renames) {
   std::string text;
   try {
     text = read_whole_file(journal, std::uint64_t{1} << 20, "commit journal");
@@ -143,9 +142,25 @@ bool roll_forward(const std::string& journal) {
     at = colon + 1 + length;
   }
   if (fields.size() % 2 != 0) return false;
-  for (std::size_t i = 0; i < fields.size(); i += 2)
-    if (::access(fields[i].c_str(), F_OK) == 0) ::rename(fields[i].c_str(), fields[i + 1].c_str());
+  renames.clear();
+  for (std::size_t i = 0; i < fields.size(); i += 2) renames.emplace_back(fields[i], fields[i + 1]);
   return true;
+}
+
+// Finishes the renames a dead run's journal lists (the temporaries still there); false when the
+// journal cannot be read or parsed (it is then left for a person to look at).
+bool roll_forward(const std::string& journal) {
+  std::vector<std::pair<std::string, std::string>> renames;
+  if (!read_journal(journal, renames)) return false;
+  for (const auto& [temporary, target] : renames)
+    if (::access(temporary.c_str(), F_OK) == 0) ::rename(temporary.c_str(), target.c_str());
+  return true;
+}
+
+bool is_journal_name(const std::string& name) {
+  const std::string ext = ".journal";
+  return name.rfind(kJournalStem, 0) == 0 && name.size() > ext.size() &&
+         name.compare(name.size() - ext.size(), ext.size(), ext) == 0;
 }
 
 }  // namespace
@@ -164,7 +179,7 @@ std::size_t remove_stale_temporaries(const std::string& dir) {
   // First the commits dead runs left half done: finished, so that their temporaries are targets.
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (name.rfind(kJournalStem, 0) != 0 || !is_dead(pid_of_temporary(name))) continue;
+    if (!is_journal_name(name) || !is_dead(pid_of_temporary(name))) continue;
     std::error_code ignored;
     if (fs::is_regular_file(it->symlink_status(ignored)) && roll_forward(it->path().string()))
       fs::remove(it->path(), ignored);
@@ -261,6 +276,31 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
 
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
   write_files_atomically(files, system_rename);
+}
+
+std::string read_committed_file(const std::string& path, std::uint64_t max_bytes, const std::string& what) {
+  const fs::path wanted = fs::absolute(path).lexically_normal();
+  std::error_code ec;
+  for (fs::directory_iterator it(directory_of(path), ec), end; !ec && it != end; it.increment(ec)) {
+    if (!is_journal_name(it->path().filename().string())) continue;
+    std::vector<std::pair<std::string, std::string>> renames;
+    if (!read_journal(it->path().string(), renames)) continue;
+    for (const auto& [temporary, target] : renames) {
+      // A writer's temporary is always beside its target: a journal naming another place is
+      // not one of ours and is not followed.
+      if (fs::path(target).lexically_normal() != wanted ||
+          fs::path(temporary).lexically_normal().parent_path() != wanted.parent_path())
+        continue;
+      // Renamed in the meantime (or never there): the target holds the committed contents.
+      try {
+        return read_whole_file(temporary, max_bytes, what);
+      } catch (const LimitError&) {
+        throw;
+      } catch (const std::runtime_error&) {
+      }
+    }
+  }
+  return read_whole_file(path, max_bytes, what);
 }
 
 void write_file_atomically(const std::string& path, const std::string& contents) {

@@ -54,9 +54,18 @@ std::uint64_t check_regular_file(const std::string& path, std::uint64_t max_byte
                                  const std::string& what = "file");
 
 // Whole file as a string, under the same checks; throws std::runtime_error naming the path.
+// A file written as one of a set is better read with read_committed_file.
 std::string read_whole_file(const std::string& path,
                             std::uint64_t max_bytes = kDefaultReadBudgetBytes,
                             const std::string& what = "file");
+
+// `path` as the commit into its directory intends: when a commit journal there (of a run killed
+// among its renames, or of one renaming now) lists `path` and its temporary is still there, the
+// temporary is read (it is what `path` becomes); otherwise `path`. Reading every file of a set
+// this way gives one set even while a writer is, or died, between its renames. Writes nothing.
+std::string read_committed_file(const std::string& path,
+                                std::uint64_t max_bytes = kDefaultReadBudgetBytes,
+                                const std::string& what = "file");
 
 // An exclusive advisory lock (flock) on a directory, held while the object lives. A second
 // holder is refused at once with an error naming the directory and `purpose`.

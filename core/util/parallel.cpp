@@ -5,8 +5,14 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <cstdlib>
+#include <fstream>
+#include <future>
+#include <limits>
+#include <string>
 #include <system_error>
 #include <thread>
+#include <vector>
 #include <vector>
 
 namespace rsaa {
@@ -68,6 +74,53 @@ void parallel_for(std::uint64_t count, std::uint64_t chunk, int threads,
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
   if (progress) progress(count, count);
+}
+
+namespace {
+
+// This process's thread count (/proc/self/status), -1 when unknown.
+int thread_count() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key) {
+    if (key == "Threads:") {
+      int n = -1;
+      status >> n;
+      return n;
+    }
+    status.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return -1;
+}
+
+}  // namespace
+
+int threads_that_can_start(int at_most) {
+  const int before = thread_count();
+  std::promise<void> release;
+  const std::shared_future<void> released = release.get_future().share();
+  std::vector<std::thread> probes;
+  try {
+    for (int k = 0; k < at_most; ++k) probes.emplace_back([released] { released.wait(); });
+  } catch (const std::system_error&) {
+  }
+  release.set_value();
+  for (std::thread& t : probes) t.join();
+  // A joined thread may still count against the limit for a moment (the kernel releases it
+  // after waking the joiner): wait until it is gone, so that the probe itself takes no room.
+  for (int wait = 0; before > 0 && wait < 1000 && thread_count() > before; ++wait)
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  return static_cast<int>(probes.size());
+}
+
+int fit_llvmpipe_threads_to_process_limit(int room_to_keep) {
+  if (std::getenv("LP_NUM_THREADS")) return -1;  // the user's choice
+  const int wanted = std::min(default_thread_count(), 16) + room_to_keep;
+  const int can = threads_that_can_start(wanted);
+  if (can >= wanted) return -1;
+  const int fitting = std::max(0, can - room_to_keep);
+  ::setenv("LP_NUM_THREADS", std::to_string(fitting).c_str(), 1);
+  return fitting;
 }
 
 }  // namespace rsaa

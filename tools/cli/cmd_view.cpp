@@ -10,6 +10,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "core/util/parallel.h"
 #include "core/util/colour.h"
 #include "image/image_io.h"
 #include "runtime/gl_context.h"
@@ -162,6 +163,7 @@ int run_view(const ViewArgs& a) {
   const Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
   std::optional<Camera> requested;
   if (!a.camera.empty()) requested = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
+  fit_llvmpipe_threads_to_process_limit(5);  // see runtime/gl_context.cpp
   if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (is there a display? try xvfb-run)");
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);

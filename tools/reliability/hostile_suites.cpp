@@ -187,7 +187,18 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
   dir.write("big-table.json", read_whole_file(table) + std::string(17u << 20, ' '));
   dir.write("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
                         "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n");
+  dir.write("cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                       "element face 1\nproperty list uchar int vert");
   dir.write("huge.off", "OFF\n999999999999 1 0\n0 0 0\n");
+  // Formats without a pre-scan whose importers trust a declared count (the import's memory budget).
+  dir.write("huge.x", "xof 0303txt 0032\nMesh m {\n 1000000000;\n 0.0;0.0;0.0;,\n 1.0;0.0;0.0;,\n 0.0;1.0;0.0;;\n 1;\n 3;0,1,2;;\n}\n");
+  dir.write("huge.ase", "*3DSMAX_ASCIIEXPORT 200\n*GEOMOBJECT {\n*NODE_NAME \"a\"\n*MESH {\n*MESH_NUMVERTEX 1000000000\n"
+                        "*MESH_NUMFACES 1000000000\n*MESH_VERTEX_LIST {\n*MESH_VERTEX 0 0 0 0\n}\n}\n}\n");
+  dir.write("huge.dae", "<?xml version=\"1.0\"?><COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">"
+                        "<library_geometries><geometry id=\"g\"><mesh><source id=\"p\"><float_array id=\"pa\" count=\"1000000000\">"
+                        "0 0 0 1 0 0 0 1 0</float_array></source><vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/>"
+                        "</vertices><triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/><p>0 1 2</p>"
+                        "</triangles></mesh></geometry></library_geometries></COLLADA>\n");
   write_float_image(f("nan.exr"), 8, 8, 3, std::numeric_limits<float>::quiet_NaN());
   write_float_image(f("inf.exr"), 8, 8, 3, std::numeric_limits<float>::infinity());
   for (const char* scale : {"1e30", "1e-30", "1"}) dir.write(std::string("scale-") + scale + ".obj", tetrahedron_obj(std::stod(scale)));
@@ -231,21 +242,35 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
                     {"train", "--pattern", "d3d4x", "--cases", "4000", "--threads", "64", "--quiet", "--out-dir", f("threads")},
                     "", f("threads/d3d4x.json"), [&](const std::string&) { return table_set_consistent(f("threads"), "d3d4x"); }};
   threads_feed.max_processes = 6;
+  // Below 5 the program used to abort before main (OpenImageIO's logger starting threads in a
+  // static initialiser); now OpenImageIO is loaded only to read or write an image.
+  Feed nproc_1{"eval-table with RLIMIT_NPROC 1 (no thread can start)", {"eval-table", "--cases", "2000", table}, "", "", {}};
+  nproc_1.max_processes = 1;
+  Feed nproc_3{"render with RLIMIT_NPROC 3 (renders on one thread; the PNG writer cannot load)",
+               {"render", "--scene", "builtin:edges", "--technique", "rsaa", "--width", "32", "--height", "24", "--out", f("nproc.png")},
+               "ulimit -u", f("nproc.png"), {}};
+  nproc_3.max_processes = 3;
 
   std::vector<SuiteResult> suites;
   suites.push_back(run_class(
-      "hostile 1, crashes: format strings, thread limits, deep nesting",
+      "hostile 1, crashes: format strings, thread and process limits, deep nesting, broken importer scenes",
       {
           refuse("view --screenshot 'x%n.png'", {"view", "--screenshot", "x%n.png", "--keys", "Q"}, "--screenshot"),
           refuse("view --screenshot '%s%s%s'", {"view", "--screenshot", "%s%s%s", "--keys", "Q"}, "--screenshot"),
           refuse("view --screenshot 'shot-%'", {"view", "--screenshot", "shot-%", "--keys", "Q"}, "--screenshot"),
           Feed{"glTF node chain 20,000 deep", {"render", "--scene", f("chain.gltf"), "--width", "32", "--height", "24", "--out", f("chain.png")}, "", f("chain.png"), {}},
           threads_feed,
+          nproc_1,
+          nproc_3,
+          refuse("assimp's RAW/WithTexture.raw (null child nodes; PreTransformVertices segfaulted)",
+                 {"render", "--scene", kModels + "/RAW/WithTexture.raw", "--out", f("raw.png")}, "WithTexture.raw", f("raw.png")),
+          Feed{"assimp's OpenGEX/camera.ogex (lights without nodes; an assertion aborted)",
+               {"render", "--scene", kModels + "/OpenGEX/camera.ogex", "--width", "32", "--height", "24", "--out", f("ogex.png")}, "", f("ogex.png"), {}},
       },
       options));
 
   suites.push_back(run_class(
-      "hostile 2, hangs: devices and FIFOs where files are read",
+      "hostile 2, hangs: devices and FIFOs where files are read, a cut PLY header",
       {
           refuse("compare /dev/zero", {"compare", "/dev/zero", f("black.png")}, "/dev/zero"),
           refuse("compare a FIFO", {"compare", f("black.png"), f("fifo.png")}, "fifo.png"),
@@ -257,6 +282,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("a model whose texture is a FIFO", {"render", "--scene", f("fifo-texture.obj"), "--out", f("out-3.png")}, "fifo.png", f("out-3.png")),
           refuse("a model whose material file is a FIFO", {"render", "--scene", f("fifo-mtl.obj"), "--out", f("out-4.png")}, "fifo-mtl.mtl", f("out-4.png")),
           refuse("plot a FIFO", {"plot", f("fifo.csv"), "--x", "a", "--y", "b", "--out", f("out-5.png")}, "fifo.csv", f("out-5.png")),
+          refuse("PLY header cut inside a property list (assimp looped forever)", {"render", "--scene", f("cut.ply"), "--out", f("out-cut.png")}, "end_header", f("out-cut.png")),
           refuse("train --generic a FIFO", {"train", "--from-scene", "builtin:edges", "--generic", f("fifo.json"), "--out-dir", f("tables-fifo")}, "fifo.json"),
       },
       options));
@@ -271,13 +297,16 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("OFF declaring 10^12 vertices", {"render", "--scene", f("huge.off"), "--out", f("out-7.png")}, "huge.off", f("out-7.png")),
           refuse("PLY declaring 4e9 vertices", {"render", "--scene", f("huge.ply"), "--out", f("out-8.png")}, "huge.ply", f("out-8.png")),
           refuse("texture declaring 16384x16384", {"render", "--scene", f("huge-texture.obj"), "--out", f("out-9.png")}, "huge-texture.png", f("out-9.png")),
+          refuse("DirectX .x declaring 10^9 vertices", {"render", "--scene", f("huge.x"), "--out", f("out-9x.png")}, "huge.x", f("out-9x.png")),
+          refuse("ASE declaring 10^9 vertices", {"render", "--scene", f("huge.ase"), "--out", f("out-9a.png")}, "huge.ase", f("out-9a.png")),
+          refuse("Collada float_array of 10^9", {"render", "--scene", f("huge.dae"), "--out", f("out-9d.png")}, "huge.dae", f("out-9d.png")),
       },
       options));
 
   // Class 4: two trains at once into one directory, a target that cannot be replaced, and the
   // temporaries of a run killed with -9.
   {
-    SuiteResult r{"hostile 4, mixed or stray output: concurrent trains, failing replace, dead runs' temporaries", 0, 0, 0, 0, {}};
+    SuiteResult r{"hostile 4, mixed or stray output: concurrent trains, failing replace, dead runs' temporaries, readers of a mixed or half-renamed set", 0, 0, 0, 0, {}};
     const std::string shared = f("shared");
     fs::create_directories(shared);
     const pid_t dead = dead_pid();
@@ -318,6 +347,41 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
               }};
     std::string d;
     r.add(judge(feed, options.rsaa_binary, d), feed.label, d);
+
+    // A reader of a set: a .glsl of another write beside the JSON is refused, naming it.
+    const std::string mixed = f("mixed");
+    fs::create_directories(mixed);
+    OffsetTable one = fallback_table(builtin_pattern("d3d4x")), two = one;
+    two.offsets[5] = {0.25, -0.5};
+    write_offset_table_files(one, mixed);
+    std::ofstream(mixed + "/d3d4x.glsl") << offset_table_glsl(two);
+    Feed mixed_feed = refuse("eval-table of a set whose .glsl is of another write", {"eval-table", "--cases", "100", mixed + "/d3d4x.json"}, "d3d4x.glsl");
+    d.clear();
+    r.add(judge(mixed_feed, options.rsaa_binary, d), mixed_feed.label, d);
+
+    // A writer killed between its renames (here: at the second), nothing written since: a reader
+    // gets the set its journal commits, whole.
+    const std::string killed = f("killed");
+    fs::create_directories(killed);
+    write_offset_table_files(one, killed);
+    const pid_t child = ::fork();
+    if (child == 0) {
+      int calls = 0;
+      write_files_atomically({{killed + "/d3d4x.json", offset_table_json(two)}, {killed + "/d3d4x.glsl", offset_table_glsl(two)},
+                              {killed + "/d3d4x.hlsl", offset_table_hlsl(two)}},
+                             [&](const std::string& from, const std::string& to, std::string&) {
+                               if (++calls == 2) ::_exit(9);
+                               return std::rename(from.c_str(), to.c_str()) == 0;
+                             });
+      ::_exit(0);
+    }
+    ::waitpid(child, nullptr, 0);
+    Feed killed_feed{"render --table of a set whose writer died between its renames",
+                     {"render", "--scene", "builtin:edges", "--technique", "rsaa", "--samples", "4", "--table", killed + "/d3d4x.json",
+                      "--width", "32", "--height", "24", "--out", f("killed.png")},
+                     "", f("killed.png"), {}};
+    d.clear();
+    r.add(judge(killed_feed, options.rsaa_binary, d), killed_feed.label, d);
     suites.push_back(r);
   }
 

@@ -1,0 +1,110 @@
+// The OpenImageIO side of image_io, built as the module librsaa_oiio.so (see oiio_codec.h).
+#include "image/oiio_codec.h"
+
+#include <algorithm>
+#include <memory>
+#include <stdexcept>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include "core/util/atomic_file.h"
+
+namespace rsaa {
+namespace {
+
+// Where the colour and alpha channels are, from the channel count and OpenImageIO's alpha index.
+struct Layout {
+  int colour_channels = 0;  // 1 (grey) or 3 (RGB)
+  int alpha = -1;           // channel index, -1: none
+  int read_end = 0;         // channels [0, read_end) are read
+};
+
+Layout layout_of(const std::string& name, const OIIO::ImageSpec& spec) {
+  const int n = spec.nchannels, a = spec.alpha_channel;
+  const auto refuse = [&](const std::string& why) -> Layout {
+    throw std::runtime_error(name + ": " + std::to_string(n) + " channels (" + why +
+                             "); expected grey, grey+alpha, RGB or RGBA");
+  };
+  Layout l;
+  if (n == 1) {
+    l = {1, -1, 1};
+  } else if (n == 2) {
+    if (a != 1) return refuse("two channels, the second not marked as alpha");
+    l = {1, 1, 2};
+  } else if (n >= 3) {
+    if (a >= 0 && a < 3) return refuse("alpha among the first three");
+    if (a >= 8) return refuse("alpha in channel " + std::to_string(a));
+    l = {3, a, a >= 0 ? a + 1 : 3};
+  } else {
+    return refuse("none");
+  }
+  return l;
+}
+
+DecodedImage decode(const std::string& name, const std::string& bytes, const ImageBudget& budget) {
+  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+  OIIO::ImageSpec config;
+  // Straight alpha as stored, so that compositing is done once, here, in linear light.
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(name, &config, &memory);
+  if (!in)
+    throw std::runtime_error(name + ": cannot read " + budget.what + " (" + OIIO::geterror() + ")");
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw std::runtime_error(name + ": " + budget.what + " has no pixels");
+  const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
+  if (spec.width > budget.max_side || spec.height > budget.max_side || pixels > budget.max_pixels)
+    throw LimitError(name + ": " + budget.what + " declares " + std::to_string(spec.width) +
+                             "x" + std::to_string(spec.height) + " pixels; the limit is " +
+                             std::to_string(budget.max_side) + " per side and " +
+                             std::to_string(budget.max_pixels) + " pixels");
+  if (spec.depth > 1) throw std::runtime_error(name + ": volume images are not read");
+  const Layout layout = layout_of(name, spec);
+
+  DecodedImage d;
+  d.width = spec.width;
+  d.height = spec.height;
+  d.float_format = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                   spec.format.basetype == OIIO::TypeDesc::HALF ||
+                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+  d.premultiplied = layout.alpha >= 0 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) == 0;
+  d.rgba.resize(pixels * 4);
+  // A band of rows at a time: the channels read may be more than the four kept.
+  const int band = std::max(1, int((std::size_t{1} << 20) / (std::size_t(spec.width) * layout.read_end)));
+  std::vector<float> rows;
+  for (int y0 = 0; y0 < spec.height; y0 += band) {
+    const int y1 = std::min(spec.height, y0 + band);
+    rows.resize(std::size_t(y1 - y0) * spec.width * layout.read_end);
+    if (!in->read_scanlines(0, 0, spec.y + y0, spec.y + y1, spec.z, 0, layout.read_end,
+                            OIIO::TypeDesc::FLOAT, rows.data()))
+      throw std::runtime_error(name + ": cannot read pixels (" + in->geterror() + ")");
+    for (std::size_t i = 0; i < std::size_t(y1 - y0) * spec.width; ++i) {
+      const float* p = &rows[i * layout.read_end];
+      float* out = &d.rgba[(std::size_t(y0) * spec.width + i) * 4];
+      for (int c = 0; c < 3; ++c) out[c] = p[layout.colour_channels == 3 ? c : 0];
+      out[3] = layout.alpha >= 0 ? p[layout.alpha] : 1.0f;
+    }
+  }
+  return d;
+}
+
+bool write(const std::string& format_name, const std::string& file, int width, int height, bool floats,
+           const void* pixels, std::string& error) {
+  auto out = OIIO::ImageOutput::create(format_name);
+  if (!out) return error = "no image format for this extension", false;
+  OIIO::ImageSpec spec(width, height, 3, floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (!floats) spec.attribute("oiio:ColorSpace", "sRGB");
+  bool ok = out->open(file, spec) && out->write_image(spec.format, pixels);
+  ok = out->close() && ok;
+  if (!ok) error = out->geterror();
+  return ok;
+}
+
+}  // namespace
+}  // namespace rsaa
+
+extern "C" const rsaa::OiioCodec* rsaa_oiio_codec() {
+  static const rsaa::OiioCodec codec{rsaa::decode, rsaa::write};
+  return &codec;
+}
