@@ -49,6 +49,7 @@ std::vector<TechniqueOptions> rsaa_defaults() {
 
 TechniqueOptions rsaa_default_without_extensions() {
   TechniqueOptions o = technique_options("rsaa", 8);
+  o.auth = 0;
   o.split_cap = 0.0;
   o.multi_surface = "fetch";
   return o;

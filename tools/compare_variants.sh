@@ -24,7 +24,7 @@ for samples in 4 8; do
       techniques+=("rsaa --samples $samples --similarity $similarity --auth $auth $paper")
     done
   done
-  techniques+=("rsaa --samples $samples")  # the defaults: sadp-plane, auth 0, split cap, multi-surface
+  techniques+=("rsaa --samples $samples")  # the defaults: sadp-plane, auth 1, split cap, multi-surface
 done
 
 file_of() {
