@@ -27,6 +27,7 @@ struct TechniqueOptions {
   std::string prepass = "jittered";  // rsaa: jittered | msaa (RsaaSettings::prepass)
   double split_cap = 1.5;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
   std::string multi_surface = "neighbours";  // rsaa: neighbours (default) | fetch (the paper's)
+  std::string split_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
                                      // paper's 0.1); 0: relative, agaa_k_pixels footprints

@@ -33,6 +33,7 @@ inline RsaaSettings paper_resolve(RsaaSettings settings = {}) {
   settings.auth = 0;  // the CPU reference has no authentication
   settings.split_cap = 0.0f;
   settings.multi_surface = "fetch";
+  settings.split_check = "off";
   return settings;
 }
 
