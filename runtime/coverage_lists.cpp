@@ -1,9 +1,13 @@
 #include "runtime/coverage_lists.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <utility>
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/packing.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 
 #include "runtime/gl_context.h"
@@ -15,7 +19,6 @@ namespace rsaa {
 namespace {
 
 constexpr std::uint32_t kListEnd = 0xffffffffu;
-constexpr std::size_t kRecordUints = CoverageFragmentLists::kRecordBytes / 4;
 
 gl::Texture make_lut_texture(const HalfPlaneLut& lut) {
   std::vector<std::uint32_t> texels;
@@ -40,6 +43,17 @@ Normal3 decode_unit_vector(std::uint32_t packed) {
   return {x / len, y / len, z / len};
 }
 
+// coverage_record.glsl's decode_slopes: 12-bit mantissas, a shared exponent.
+std::pair<float, float> decode_slopes(std::uint32_t code) {
+  const int e = int(code >> 24);
+  if (e == 0) return {0.0f, 0.0f};
+  const auto mantissa = [&](int shift) {
+    const int q = int((code >> shift) & 0xfffu);
+    return q >= 2048 ? q - 4096 : q;
+  };
+  return {std::ldexp(float(mantissa(0)), e - 139), std::ldexp(float(mantissa(12)), e - 139)};
+}
+
 float bits_to_float(std::uint32_t u) {
   float f;
   std::memcpy(&f, &u, 4);
@@ -48,14 +62,18 @@ float bits_to_float(std::uint32_t u) {
 
 }  // namespace
 
-CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height)
+CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_pattern, int width, int height,
+                                             bool shading_inputs)
     : width_(width),
       height_(height),
+      shading_inputs_(shading_inputs),
+      narrow_(coverage_pattern.size() <= 32),
+      record_uints_((narrow_ ? 3 : 4) + (shading_inputs ? 6 : 5)),
       lut_(coverage_pattern),
       program_(gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                  {GL_GEOMETRY_SHADER, gl::shader_source("coverage_fragments.geom")},
                                  {GL_FRAGMENT_SHADER, gl::shader_source("coverage_fragments.frag")}},
-                                "", "coverage fragment lists")),
+                                record_defines(), "coverage fragment lists")),
       lut_texture_(make_lut_texture(lut_)),
       heads_(gl::make_texture_2d(GL_R32UI, width, height)) {
   GLuint id;
@@ -71,15 +89,20 @@ CoverageFragmentLists::CoverageFragmentLists(const SamplePattern& coverage_patte
   glProgramUniform2ui(p, glGetUniformLocation(p, "u_full_mask"), GLuint(full), GLuint(full >> 32));
   glProgramUniform1i(p, glGetUniformLocation(p, "u_halfplane_lut"), 1);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_heads"), 0);
-  allocate_records(std::size_t(width) * height * 4);
+  allocate_records(std::size_t(width) * height * kInitialRecordsPerPixel);
   gl::check("coverage fragment lists");
+}
+
+std::string CoverageFragmentLists::record_defines() const {
+  return std::string(narrow_ ? "#define COVERAGE_NARROW\n" : "") +
+         (shading_inputs_ ? "#define COVERAGE_SHADING_INPUTS\n" : "");
 }
 
 void CoverageFragmentLists::allocate_records(std::size_t capacity) {
   GLuint id;
   glCreateBuffers(1, &id);
   records_ = gl::Buffer(id);
-  glNamedBufferStorage(id, GLsizeiptr(capacity * kRecordBytes), nullptr, 0);
+  glNamedBufferStorage(id, GLsizeiptr(capacity * record_bytes()), nullptr, 0);
   capacity_ = capacity;
 }
 
@@ -114,6 +137,11 @@ void CoverageFragmentLists::z_prepass(const GpuScene& scene, const View& view) {
 }
 
 std::size_t CoverageFragmentLists::build(const GpuScene& scene, const View& view) {
+  // The buffer follows the frames' fragment counts: grown to 1.25 x the count when a frame
+  // overflows it (that frame is drawn again), shrunk to 1.25 x the last count when that used less
+  // than half of it (the gap between the two keeps a steady view from reallocating).
+  if (built_ && fragments_ * 2 < capacity_) allocate_records(std::max<std::size_t>(fragments_ + fragments_ / 4, 64));
+  built_ = true;
   for (int attempt = 0;; ++attempt) {
     const std::uint32_t end = kListEnd;
     glClearTexImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &end);
@@ -148,14 +176,17 @@ void CoverageFragmentLists::bind_for_resolve(GLuint program) const {
 }
 
 double CoverageFragmentLists::bytes_per_pixel() const {
-  return 4.0 + double(capacity_) * kRecordBytes / (double(width_) * height_);
+  // The z-prepass keeps a 4x depth buffer (32-bit) and the max-depth image besides.
+  const double prepass = z_prepass_enabled() ? 4 * 4 + 4 : 0;
+  return 4.0 + prepass + double(capacity_) * record_bytes() / (double(width_) * height_);
 }
 
 std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() const {
   std::vector<std::uint32_t> heads(std::size_t(width_) * height_);
   glGetTextureImage(heads_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(heads.size() * 4), heads.data());
   const std::size_t stored = std::min(fragments_, capacity_);
-  std::vector<std::uint32_t> records(stored * kRecordUints);
+  const std::size_t uints = std::size_t(record_uints_);
+  std::vector<std::uint32_t> records(stored * uints);
   if (stored) glGetNamedBufferSubData(records_.get(), 0, GLsizeiptr(records.size() * 4), records.data());
   std::vector<std::vector<CoverageFragment>> pixels(heads.size());
   for (int y = 0; y < height_; ++y)
@@ -163,15 +194,23 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
       // GL rows are bottom first; ours top first.
       auto& list = pixels[std::size_t(height_ - 1 - y) * width_ + x];
       for (std::uint32_t i = heads[std::size_t(y) * width_ + x]; i != kListEnd && i < stored;
-           i = records[i * kRecordUints]) {
-        const std::uint32_t* r = &records[i * kRecordUints];
+           i = records[i * uints]) {
+        const std::uint32_t* r = &records[i * uints];
         CoverageFragment f;
         f.order = r[1];
-        f.coverage = Mask(r[2]) | Mask(r[3]) << 32;
-        f.depth = {bits_to_float(r[4]), bits_to_float(r[5]), bits_to_float(r[6])};
-        f.normal = decode_unit_vector(r[7]);
-        const glm::vec2 rg = glm::unpackHalf2x16(r[8]), b = glm::unpackHalf2x16(r[9]);
-        f.colour = {rg.x, rg.y, b.x};
+        f.coverage = Mask(r[2]) | (narrow_ ? 0 : Mask(r[3]) << 32);
+        const std::uint32_t* d = r + (narrow_ ? 3 : 4);  // coverage_record.glsl's RECORD_DEPTH
+        const auto [ddx, ddy] = decode_slopes(d[1]);
+        f.depth = {bits_to_float(d[0]), ddx, ddy};
+        f.normal = decode_unit_vector(d[2]);
+        if (shading_inputs_) {
+          const glm::vec2 rg = glm::unpackHalf2x16(d[3]), b = glm::unpackHalf2x16(d[4]);
+          f.albedo = {rg.x, rg.y, b.x};
+          f.shading_normal = decode_unit_vector(d[5]);
+        } else {
+          const glm::vec2 rg = glm::unpackHalf2x16(d[3]), b = glm::unpackHalf2x16(d[4]);
+          f.colour = {rg.x, rg.y, b.x};
+        }
         list.push_back(f);
       }
       std::sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
@@ -180,12 +219,20 @@ std::vector<std::vector<CoverageFragment>> CoverageFragmentLists::read_back() co
   return pixels;
 }
 
+namespace {
+std::string resolve_defines(const std::string& resolve_define, bool shade_surfaces) {
+  return "#define " + resolve_define + "\n" + (shade_surfaces ? "#define DCAA_SHADE_SURFACES\n" : "");
+}
+}  // namespace
+
 CoverageListTechnique::CoverageListTechnique(const SamplePattern& coverage_pattern, const std::string& resolve_define,
-                                             int width, int height, bool z_prepass)
-    : lists_(coverage_pattern, width, height),
-      resolve_(make_fullscreen_program("coverage_resolve.frag", "#define " + resolve_define + "\n")),
-      continue_(make_fullscreen_program("coverage_resolve.frag",
-                                        "#define " + resolve_define + "\n#define COVERAGE_CONTINUE\n")),
+                                             int width, int height, bool z_prepass, bool shade_surfaces)
+    : lists_(coverage_pattern, width, height, shade_surfaces),
+      resolve_(make_fullscreen_program("coverage_resolve.frag",
+                                       resolve_defines(resolve_define, shade_surfaces) + lists_.record_defines())),
+      continue_(make_fullscreen_program("coverage_resolve.frag", resolve_defines(resolve_define, shade_surfaces) +
+                                                                     lists_.record_defines() +
+                                                                     "#define COVERAGE_CONTINUE\n")),
       pending_index_(gl::make_texture_2d(GL_R32UI, width, height)) {
   if (z_prepass) lists_.enable_z_prepass();
   GLuint id;
@@ -222,9 +269,15 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
   timer_.begin("resolve");
   const GLuint program = resolve_.get();
   const glm::vec3 bg = scene.background();
+  const glm::mat4 inverse_projection = glm::inverse(view.projection);
   for (GLuint p : resolve_programs()) {
     lists_.bind_for_resolve(p);
     glProgramUniform3f(p, glGetUniformLocation(p, "u_background"), bg.r, bg.g, bg.b);
+    if (lists_.shading_inputs()) {
+      glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "u_inverse_projection"), 1, GL_FALSE,
+                                glm::value_ptr(inverse_projection));
+      glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(view.width), float(view.height));
+    }
   }
   const std::uint32_t none = 0;
   glClearTexImage(pending_index_.get(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
@@ -266,6 +319,18 @@ void CoverageListTechnique::render(const GpuScene& scene, const View& view, GLui
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   timer_.end();
   gl::check("coverage lists: resolve");
+}
+
+DcaaSurfaceShader dcaa_surface_shader(const View& view, const std::vector<PointLight>& point_lights, int x, int y) {
+  const glm::mat4 inverse_projection = glm::inverse(view.projection);
+  const float wx = float(x) + 0.5f, wy = float(view.height - 1 - y) + 0.5f;  // GL window space
+  return [=, &point_lights](const DcaaSurface& s) {
+    const glm::vec4 v = inverse_projection * glm::vec4(wx / float(view.width) * 2.0f - 1.0f,
+                                                       wy / float(view.height) * 2.0f - 1.0f,
+                                                       s.depth.at_centre * 2.0f - 1.0f, 1.0f);
+    return shade_surface(s.albedo, s.shading_normal, {v.x / v.w, v.y / v.w, v.z / v.w}, kSceneSpecularExponent,
+                         kSceneSpecularScale, 1.0f, point_lights);
+  };
 }
 
 CoverageFragmentLists* coverage_lists_of(Technique& technique) {

@@ -85,6 +85,7 @@ const char* stage_name(GLenum stage) {
   switch (stage) {
     case GL_VERTEX_SHADER: return "vertex";
     case GL_GEOMETRY_SHADER: return "geometry";
+    case GL_COMPUTE_SHADER: return "compute";
     case GL_FRAGMENT_SHADER: return "fragment";
     default: return "shader";
   }
@@ -148,6 +149,8 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   depth_test_ = glIsEnabled(GL_DEPTH_TEST);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
+  glGetDoublev(GL_DEPTH_RANGE, depth_range_);
+  polygon_offset_fill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
   scissor_ = glIsEnabled(GL_SCISSOR_TEST);
   sample_shading_ = glIsEnabled(GL_SAMPLE_SHADING);
   cull_face_ = glIsEnabled(GL_CULL_FACE);
@@ -213,6 +216,8 @@ SavedState::~SavedState() {
   glMinSampleShading(min_sample_shading_);
   glDepthFunc(GLenum(depth_func_));
   glDepthMask(depth_mask_);
+  glDepthRange(depth_range_[0], depth_range_[1]);
+  polygon_offset_fill_ ? glEnable(GL_POLYGON_OFFSET_FILL) : glDisable(GL_POLYGON_OFFSET_FILL);
   depth_test_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
   glUseProgram(GLuint(program_));
   glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
@@ -229,6 +234,8 @@ void set_pass_state(bool depth_test) {
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
+  glDepthRange(0.0, 1.0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
   depth_test ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
 }
 

@@ -87,7 +87,7 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
 namespace rsaa::gl {
 
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
-// bindings, viewport, current program, depth test/function/mask, blending and colour mask of
+// bindings, viewport, current program, depth test/function/mask/range, polygon offset, blending and colour mask of
 // every draw buffer, scissor test, face culling, polygon mode, rasterizer discard, sample
 // shading, the vertex array, textures and sampler objects, uniform buffers (below). So that a
 // pass dropped into an engine leaves the engine's state as it found it.
@@ -118,6 +118,8 @@ class SavedState {
   GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, scissor_ = GL_FALSE;
   GLboolean sample_shading_ = GL_FALSE, cull_face_ = GL_FALSE, rasterizer_discard_ = GL_FALSE;
   GLint polygon_mode_ = GL_FILL;
+  GLdouble depth_range_[2] = {0.0, 1.0};
+  GLboolean polygon_offset_fill_ = GL_FALSE;
   GLfloat min_sample_shading_ = 0.0f;
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;
   std::vector<UnitTextures> textures_;
@@ -126,8 +128,8 @@ class SavedState {
 };
 
 // The state a pass draws with, whatever the engine left: clears and writes reach every pixel
-// (no scissor, all masks on, no culling, filled polygons, no rasterizer discard), no blending,
-// depth test on (GL_LESS) or off.
+// (no scissor, all masks on, no culling, filled polygons, no rasterizer discard, no polygon
+// offset), no blending, depth range [0, 1], depth test on (GL_LESS) or off.
 void set_pass_state(bool depth_test);
 
 // Throws std::invalid_argument naming `what` unless `texture` is an existing 2D texture of

@@ -39,6 +39,9 @@ struct RsaaPass::Objects {
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
   gl::Program subsample_program, post_program;
   gl::CachedFramebuffer resolve_target;
+  // The two-pass post-process (RsaaSettings::post "edges"): depth 0 marks the pixels to resolve.
+  gl::Program edge_program;
+  gl::Texture edge_depth;
 };
 
 namespace {
@@ -179,8 +182,18 @@ GLenum code_format(int bits) {
   throw std::invalid_argument("RSAA code bits must be 8, 16 or 32, not " + std::to_string(bits));
 }
 
-// A missing or mismatched texture in the engine's frame is an error naming the field.
-void validate_frame(const RsaaFrame& frame, int width, int height) {
+bool zero_to_one(const RsaaSettings& s) { return s.depth == "zero-to-one" || s.depth == "reverse-z"; }
+
+// View-space distance in front of the camera (along -z) at window depth `depth` through
+// `inverse_projection`.
+double view_distance(const glm::mat4& inverse_projection, float depth, bool zero_to_one_depth) {
+  const glm::vec4 view = inverse_projection * glm::vec4(0.0f, 0.0f, zero_to_one_depth ? depth : depth * 2.0f - 1.0f, 1.0f);
+  return -double(view.z) / double(view.w);
+}
+
+// A missing or mismatched texture in the engine's frame is an error naming the field; a depth
+// convention other than the settings' too.
+void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSettings& settings) {
   if (frame.width != width || frame.height != height)
     throw std::invalid_argument("RsaaFrame is " + std::to_string(frame.width) + "x" +
                                 std::to_string(frame.height) + ", the RsaaPass was made for " +
@@ -200,13 +213,26 @@ void validate_frame(const RsaaFrame& frame, int width, int height) {
                                   std::snprintf(hex, sizeof hex, "%04X", unsigned(filter));
                                   return std::string(hex);
                                 }());
-  // Depth is read as OpenGL's default convention: clip z in [-w, w], window depth 0 near .. 1 far.
+  // Depth is read in the settings' convention (RsaaSettings::depth): the clip control must be its.
   GLint origin = 0, depth_mode = 0;
   glGetIntegerv(GL_CLIP_ORIGIN, &origin);
   glGetIntegerv(GL_CLIP_DEPTH_MODE, &depth_mode);
-  if (origin != GL_LOWER_LEFT || depth_mode != GL_NEGATIVE_ONE_TO_ONE)
-    throw std::invalid_argument("the RSAA pass needs glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE), "
-                                "OpenGL's default: its depth reconstruction and pre-pass depth test assume it");
+  const bool zo = zero_to_one(settings);
+  if (origin != GL_LOWER_LEFT || depth_mode != (zo ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE))
+    throw std::invalid_argument(std::string("RsaaSettings::depth \"") + settings.depth + "\" needs glClipControl(GL_LOWER_LEFT, " +
+                                (zo ? "GL_ZERO_TO_ONE" : "GL_NEGATIVE_ONE_TO_ONE") + "), the GL has " +
+                                (origin != GL_LOWER_LEFT ? "GL_UPPER_LEFT" : zo ? "GL_NEGATIVE_ONE_TO_ONE" : "GL_ZERO_TO_ONE") +
+                                ": depth reconstruction and the pre-pass depth test follow the setting");
+  // Nearer is smaller depth, but for reverse Z: a camera projection (both depths in front of the
+  // camera) must agree.
+  const double quarter = view_distance(frame.inverse_projection, 0.25f, zo);
+  const double three_quarters = view_distance(frame.inverse_projection, 0.75f, zo);
+  if (!(quarter > 0.0 && three_quarters > 0.0 && std::isfinite(quarter) && std::isfinite(three_quarters))) return;
+  const bool reversed = quarter > three_quarters;
+  if (reversed != (settings.depth == "reverse-z"))
+    throw std::invalid_argument(std::string("RsaaFrame::inverse_projection puts depth ") + (reversed ? "1" : "0") +
+                                " nearer, but RsaaSettings::depth is \"" + settings.depth + "\"" +
+                                (reversed ? " (reverse Z needs \"reverse-z\")" : ""));
 }
 
 // The outside pixel of each subsample, converted to window space (+y up).
@@ -234,10 +260,9 @@ RsaaTargets& RsaaTargets::operator=(RsaaTargets&&) noexcept = default;
 void RsaaTargets::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get()); }
 GlName RsaaTargets::colour() const { return gl_->colour.get(); }
 
-void RsaaTargets::clear(const float background[3]) const {
+void RsaaTargets::clear(const float background[3], float far_depth) const {
   const GLfloat colour[4] = {background[0], background[1], background[2], 1.0f};
   const GLuint zero[4] = {0, 0, 0, 0};
-  const GLfloat far_depth = 1.0f;
   const GLuint framebuffer = gl_->framebuffer.get();
   glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, colour);
   glClearNamedFramebufferuiv(framebuffer, GL_COLOR, 1, zero);
@@ -286,6 +311,9 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
     throw std::invalid_argument("RSAA multi_surface must be fetch or neighbours, not '" + settings.multi_surface + "'");
   if (settings.split_check != "off" && settings.split_check != "neighbours")
     throw std::invalid_argument("RSAA split_check must be off or neighbours, not '" + settings.split_check + "'");
+  if (settings.depth != "gl" && settings.depth != "zero-to-one" && settings.depth != "reverse-z")
+    throw std::invalid_argument("RSAA depth must be gl, zero-to-one or reverse-z, not '" + settings.depth + "'");
+  if (zero_to_one(settings)) defines += "#define RSAA_DEPTH_ZERO_TO_ONE\n";
   if (settings.split_cap > 0.0f) {
     char cap[64];
     std::snprintf(cap, sizeof cap, "%.9g", double(settings.split_cap));
@@ -321,6 +349,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   gl_->table = table_texture(table);
 
   const int n = pattern_.size();
+  if (settings.post != "edges" && settings.post != "single")
+    throw std::invalid_argument("RSAA post '" + settings.post + "' is not one of edges, single");
   if (settings.prepass != "jittered" && settings.prepass != "msaa")
     throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
   multisample_ = settings.prepass == "msaa" && driver_samples_pattern(pattern_);
@@ -373,6 +403,13 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                         {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
                                        defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
                                        "RSAA post-process");
+  if (settings.post == "edges") {
+    gl_->edge_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                          {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post_edges.frag")}},
+                                         defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
+                                         "RSAA post-process edge pass");
+    gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
+  }
   gl::check("creating the RSAA pass");
 }
 RsaaPass::~RsaaPass() = default;
@@ -403,7 +440,7 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
 }
 
 void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw) {
-  validate_frame(frame, width_, height_);
+  validate_frame(frame, width_, height_, settings_);
   const int first = settings_.prepass_first_unit;
   const gl::SavedState saved({first, first + 1, first + 2}, {settings_.uniform_binding});
   gl::set_pass_state(true);  // before the clears: they obey the engine's scissor and masks
@@ -411,7 +448,13 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
   const GLuint textures[3] = {frame.centre_normal, frame.centre_primitive, frame.centre_depth};
   glBindTextures(GLuint(first), 3, textures);
   const GLuint zero[4] = {0, 0, 0, 0};
-  const GLfloat far_depth = 1.0f;
+  const bool reverse_z = settings_.depth == "reverse-z";
+  const GLfloat far_depth = reverse_z ? 0.0f : 1.0f;
+  // The pass's depth state for a draw: the nearest surface wins.
+  const auto set_depth_state = [&] {
+    gl::set_pass_state(true);
+    if (reverse_z) glDepthFunc(GL_GREATER);
+  };
   const auto write_per_draw = [&](glm::vec2 jitter, int subsample, Vec2 sample_shift) {
     const RsaaUniformPerDraw per_draw = {
         {jitter.x, jitter.y}, settings_.threshold, subsample, {float(sample_shift.x), float(sample_shift.y)}};
@@ -424,7 +467,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
       glBindFramebuffer(GL_FRAMEBUFFER, fb);
       glViewport(0, 0, frame.width, frame.height);
-      gl::set_pass_state(true);
+      set_depth_state();
       glEnable(GL_SAMPLE_SHADING);
       glMinSampleShading(1.0f);
       // The shifted draw: the image moves by -shift, so that raster sample i sees the point at
@@ -447,7 +490,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     const Vec2 s = pattern_.positions[i];
     const glm::vec2 jitter = jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height);
     write_per_draw(jitter, i, {0.0, 0.0});
-    gl::set_pass_state(true);  // again: the previous callback may have changed it
+    set_depth_state();  // again: the previous callback may have changed it
     glColorMaski(0, i % 4 == 0, i % 4 == 1, i % 4 == 2, i % 4 == 3);
     draw(i, jitter);
   }
@@ -505,7 +548,7 @@ void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const 
 }
 
 void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
-  validate_frame(frame, width_, height_);
+  validate_frame(frame, width_, height_, settings_);
   gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
   if (settings_.output_mask && mask_output)
     gl::require_texture(mask_output, GL_R32UI, width_, height_, "RsaaPass::resolve mask_output");
@@ -518,7 +561,8 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     if (!mask_output) throw std::invalid_argument("RSAA resolve: output_mask set but no mask texture");
     targets.push_back({mask_output});
   }
-  const GLuint fb = gl_->resolve_target.get(targets);
+  const bool edges = settings_.post == "edges";
+  const GLuint fb = gl_->resolve_target.get(targets, {edges ? gl_->edge_depth.get() : 0u});
   write_frame_uniforms(frame);
   glBindSamplers(0, kPostUnits, nullptr);  // the textures' own filtering (an engine's sampler objects are restored)
   glBindTextureUnit(kColourUnit, frame.colour);
@@ -530,6 +574,17 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);
+  if (edges) {
+    // Edge pass: every pixel's kept colour, depth 0 where the mask is not all-similar.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glUseProgram(gl_->edge_program.get());
+    draw_fullscreen_triangle();
+    // Resolve pass: the full-screen triangle's depth is 0.5, or 0 under glClipControl
+    // GL_ZERO_TO_ONE (depth range [0, 1]); GL_GEQUAL passes it on depth 0 only either way.
+    glDepthFunc(GL_GEQUAL);
+    glDepthMask(GL_FALSE);
+  }
   glUseProgram(gl_->post_program.get());
   draw_fullscreen_triangle();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -20,9 +20,13 @@
 // std::invalid_argument naming the field, so a forgotten or wrong binding is an error, not a
 // wrong image.
 //
-// DEPTH CONVENTION. OpenGL's default: glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE), depth
-// range [0, 1], nearer is less (no reverse Z); inverse_projection maps NDC (z = 2 depth - 1) to
-// view space. Another clip control is refused (std::invalid_argument).
+// DEPTH CONVENTION (RsaaSettings::depth). "gl", OpenGL's default: glClipControl(GL_LOWER_LEFT,
+// GL_NEGATIVE_ONE_TO_ONE), nearer is less, inverse_projection maps NDC (z = 2 depth - 1) to view
+// space. "zero-to-one": glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), nearer is less, NDC z =
+// depth. "reverse-z": GL_ZERO_TO_ONE with nearer greater (depth cleared to 0, GL_GREATER), NDC z =
+// depth; the pre-pass then clears its depth to 0 and tests with GL_GREATER. Depth range [0, 1]
+// always. A clip control other than the setting's, or an inverse_projection whose depth order is
+// not the setting's, is refused (std::invalid_argument).
 //
 // THE PRE-PASS, WITH THE ENGINE'S OWN SHADERS (render_subsamples_with_own_shaders). The engine
 // compiles a program whose stages begin with `#version 450 core` (or later), then prepass_glsl()
@@ -127,6 +131,14 @@ struct RsaaSettings {
   // (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's outermost
   // pixels); on llvmpipe it is slower (per-sample shading), so it is not the default.
   std::string prepass = "jittered";
+  // How resolve() runs the post-process: "edges" (default) in two passes, an edge pass that copies
+  // every pixel's colour and marks in a depth target the pixels whose mask is not all-similar,
+  // then the resolve only there (an early depth test skips the rest: a driver that executes both
+  // sides of a branch for a whole SIMD batch, as Mesa llvmpipe, pays only for edge pixels);
+  // "single": one pass over every pixel. Both give the same image (tests compare them).
+  std::string post = "edges";
+  // The frame's depth convention: "gl" | "zero-to-one" | "reverse-z" (DEPTH CONVENTION above).
+  std::string depth = "gl";
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
   // Where the shaders find the pass's resources: the pre-pass's three textures at units
   // prepass_first_unit to +2, the uniform block (shaders/rsaa_uniforms.glsl) at uniform_binding.
@@ -159,8 +171,9 @@ class RsaaTargets {
   RsaaTargets(RsaaTargets&&) noexcept;
   RsaaTargets& operator=(RsaaTargets&&) noexcept;
 
-  // Colour to `background` (linear RGB), normal and primitive to 0 (background), depth to 1.
-  void clear(const float background[3]) const;
+  // Colour to `background` (linear RGB), normal and primitive to 0 (background), depth to
+  // `far_depth` (0 for reverse Z).
+  void clear(const float background[3], float far_depth = 1.0f) const;
   // Binds the framebuffer to GL_FRAMEBUFFER: colour at location 0, normal 1, primitive 2, depth.
   void bind() const;
   RsaaFrame frame(const glm::mat4& inverse_projection) const;

@@ -22,8 +22,8 @@ SceneRenderer::SceneRenderer()
       gbuffer_(make_scene_program("#define RSAA_GBUFFER\n#define RSAA_SAMPLE_COUNT 1\n",
                                   "scene shading + G-buffer")) {}
 
-void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc,
-                         GLuint program) {
+void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program,
+                         GLenum depth_func) {
   glUseProgram(program);
   glUniformMatrix4fv(glGetUniformLocation(program, "u_view"), 1, GL_FALSE, glm::value_ptr(view.view));
   glUniformMatrix4fv(glGetUniformLocation(program, "u_projection"), 1, GL_FALSE,
@@ -31,7 +31,7 @@ void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitt
   glUniform2f(glGetUniformLocation(program, "u_jitter_ndc"), jitter_ndc.x, jitter_ndc.y);
   glViewport(0, 0, view.width, view.height);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(depth_func);
   scene.draw(program);
   glDisable(GL_DEPTH_TEST);
 }

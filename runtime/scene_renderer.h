@@ -17,8 +17,10 @@ class SceneRenderer {
   SceneRenderer();
 
   // Sets the frame uniforms on `program` and draws the scene with the image translated by
-  // `jitter_ndc` (see jitter_ndc_for_sample). The caller binds the framebuffer.
-  static void draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program);
+  // `jitter_ndc` (see jitter_ndc_for_sample), depth-tested with `depth_func` (GL_GREATER for
+  // reverse Z). The caller binds the framebuffer.
+  static void draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program,
+                   GLenum depth_func = GL_LESS);
 
   GLuint shade_program() const { return shade_.get(); }
   // The 1x frame RSAA post-processes: clears `targets` and draws the scene into them with the

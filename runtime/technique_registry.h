@@ -28,6 +28,7 @@ struct TechniqueOptions {
   double split_cap = 1.5;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
   std::string multi_surface = "neighbours";  // rsaa: neighbours (default) | fetch (the paper's)
   std::string split_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
+  std::string post = "edges";        // rsaa: edges (two passes) | single (RsaaSettings::post)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
                                      // paper's 0.1); 0: relative, agaa_k_pixels footprints
@@ -37,6 +38,8 @@ struct TechniqueOptions {
   std::string rules = "surface";     // dyncov: surface | seed (core/reference/dynamic_coverage.h);
                                      // dcaa: surface | paper (core/reference/dcaa.h)
   bool z_prepass = false;            // dcaa, dyncov: DCAA's z-prepass (4x MSAA max depth)
+  std::string shade = "fragment";    // dcaa: fragment (each fragment's colour, merged) | surface
+                                     // (each surface shaded once from its merged attributes)
 };
 
 // What a technique registers.

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "core/reference/agaa.h"
+#include "core/reference/dcaa.h"
+#include "core/reference/scene_shading.h"
 #include "runtime/camera.h"
 #include "runtime/technique.h"
 
@@ -28,5 +30,10 @@ AgaaFrameData read_back_agaa(Technique& agaa, const View& view);
 // The per-pixel fragment lists of a coverage technique (dcaa, dyncov), else nullptr: for tests
 // that compare the GL resolve with the CPU reference on the same fragments.
 CoverageFragmentLists* coverage_lists_of(Technique& technique);
+
+// What coverage_resolve.frag does shading a surface once (dcaa --shade surface) in pixel (x, y)
+// (rows top first): the scene's shading of the surface's albedo and shading normal at the view
+// position of its depth at the pixel centre, with the scene's point lights (kept by reference).
+DcaaSurfaceShader dcaa_surface_shader(const View& view, const std::vector<PointLight>& point_lights, int x, int y);
 
 }  // namespace rsaa

@@ -1,4 +1,5 @@
-// Coverage-based techniques, fragment stage: shades the fragment once at the pixel centre,
+// Coverage-based techniques, fragment stage: shades the fragment once at the pixel centre (with
+// COVERAGE_SHADING_INPUTS: stores its albedo and shading normal for the resolve to shade),
 // computes its coverage mask from the half-plane LUT and its depth plane, and appends a record
 // to the pixel's list (llvmpipe has no fragment-shader interlock; coverage_resolve.frag replays
 // each list in primitive order instead). Record layout: coverage_record.glsl.
@@ -19,13 +20,6 @@ uniform uvec2 u_full_mask;  // the coverage pattern's samples
 layout(r32ui) uniform coherent uimage2D u_heads;
 uniform bool u_z_prepass;         // coverage_max_depth.frag's result is bound
 uniform sampler2D u_max_depth;    // farthest visible depth of the pixel (window depth)
-
-// Octahedral encoding of a unit vector in 2 x 16 bits.
-uint encode_unit_vector(vec3 n) {
-  n /= abs(n.x) + abs(n.y) + abs(n.z);
-  vec2 e = n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-  return packSnorm2x16(e);
-}
 
 void main() {
   vec2 c = gl_FragCoord.xy;
@@ -50,7 +44,11 @@ void main() {
   // between the rasteriser's depth and our plane's).
   if (u_z_prepass && plane.x - 0.5 * (abs(plane.y) + abs(plane.z)) > texelFetch(u_max_depth, ivec2(c), 0).x + 1e-6)
     discard;
+#ifdef COVERAGE_SHADING_INPUTS
+  vec3 colour = scene_albedo();  // shaded once per surface by the resolve
+#else
   vec3 colour = shade_scene_fragment().rgb;
+#endif
   if (any(isnan(colour)) || any(isinf(colour)) || any(isnan(plane)) || any(isinf(plane))) discard;
 
   uint index = atomicAdd(coverage_records_used, 1u);
@@ -63,5 +61,8 @@ void main() {
   r.depth = plane;
   r.normal = encode_unit_vector(f_in.face_normal);
   r.colour = colour;
+#ifdef COVERAGE_SHADING_INPUTS
+  r.shading_normal = scene_shading_normal();
+#endif
   coverage_store(index, r);
 }

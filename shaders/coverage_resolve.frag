@@ -17,7 +17,20 @@
 // SCAN_PER_PASS records, keeping the SORT_SLOTS smallest primitive orders above the last one
 // replayed in a max-heap; a finished walk replays them in order, and another walk starts while
 // the pass has rounds left. Any length, bounded per pass.
+//
+// DCAA_SHADE_SURFACES (dcaa --shade surface, with COVERAGE_SHADING_INPUTS): a surface's colour
+// slot holds its merged albedo and s_shading_normal its merged shading normal; the resolve shades
+// each surface that shows a coverage sample once, at the view position of its depth plane at the
+// pixel centre. A second merge, or a first merge whose shading normals differ beyond the cone,
+// shades both surfaces first and merges colours (a zero shading normal marks a slot already
+// shaded). DcaaPixel with a DcaaSurfaceShader is the oracle.
 #include "coverage_record.glsl"
+#ifdef DCAA_SHADE_SURFACES
+#include "rsaa_common.glsl"
+#include "shading.glsl"
+uniform mat4 u_inverse_projection;
+uniform vec2 u_viewport;
+#endif
 
 layout(r32ui) uniform readonly uimage2D u_heads;
 uniform vec3 u_background;  // linear clear colour
@@ -35,15 +48,16 @@ const int ROUNDS_PER_PASS = 2;
 // Pending entries (long lists), PENDING_UINTS uints each (u_pending_index gives a pixel's
 // entry + 1, 0 for none): 0 unused,
 // 1 flags (1 started, 2 done), 2 last primitive order replayed, 3 cursor (next record to walk),
-// 4 heap size, then the heap's keys and record indices, then the technique's state (save_state).
+// 4 heap size, then the heap's record indices (their keys are the records' orders, read again on
+// load), then the technique's state (save_state).
 layout(std430, binding = 2) coherent buffer CoveragePendingCounter {
   uint pending_used;
   uint pending_capacity;
   uint pending_active;  // entries not done after a continuation pass
 };
 layout(std430, binding = 3) coherent buffer CoveragePending { uint coverage_pending[]; };
-const uint PENDING_UINTS = 128u;  // CoverageListTechnique::kPendingUints
-const uint PENDING_STATE = 5u + 2u * uint(SORT_SLOTS);
+const uint PENDING_UINTS = 96u;  // CoverageListTechnique::kPendingUints
+const uint PENDING_STATE = 5u + uint(SORT_SLOTS);
 
 #ifdef COVERAGE_DCAA
 uniform float u_cos_normal_threshold;
@@ -61,7 +75,10 @@ const int MAX_SURFACES = DCAA_MAX_SURFACES;
 uvec2 s_coverage[MAX_SURFACES + 1];
 vec3 s_depth[MAX_SURFACES + 1];
 vec3 s_normal[MAX_SURFACES + 1];
-vec3 s_colour[MAX_SURFACES + 1];
+vec3 s_colour[MAX_SURFACES + 1];  // the albedo with DCAA_SHADE_SURFACES
+#ifdef DCAA_SHADE_SURFACES
+vec3 s_shading_normal[MAX_SURFACES + 1];
+#endif
 int s_count = 0;
 
 int bits(uvec2 m) { return bitCount(m.x) + bitCount(m.y); }
@@ -73,13 +90,34 @@ float overlap_amount(vec3 a, vec3 b) {
   return min(a.x + half_range(a), b.x + half_range(b)) - max(a.x - half_range(a), b.x - half_range(b));
 }
 
-// merge_surfaces() of core/reference/dcaa.cpp, into slot i from slot j.
+#ifdef DCAA_SHADE_SURFACES
+bool is_shaded(int i) { return s_shading_normal[i] == vec3(0.0); }
+// The scene's shading of slot i's merged inputs at its depth plane's view position.
+vec3 shade_slot(int i) {
+  vec3 position = rsaa_view_position(gl_FragCoord.xy, s_depth[i].x, u_inverse_projection, u_viewport);
+  return shade_surface(s_colour[i], s_shading_normal[i], position, SCENE_SPECULAR_EXPONENT, SCENE_SPECULAR_SCALE);
+}
+void make_shaded(int i) {
+  if (is_shaded(i)) return;
+  s_colour[i] = shade_slot(i);
+  s_shading_normal[i] = vec3(0.0);
+}
+#else
+void make_shaded(int i) {}
+#endif
+
+// merge_surfaces() of core/reference/dcaa.cpp, into slot i from slot j (both shaded or neither).
 void merge_into(int i, int j) {
   float wa = float(bits(s_coverage[i])), wb = float(bits(s_coverage[j]));
   float ka = wa + wb > 0.0 ? wa / (wa + wb) : 0.5, kb = 1.0 - ka;
   vec3 n = ka * s_normal[i] + kb * s_normal[j];
   float len = length(n);
   s_normal[i] = len > 1e-6 ? n / len : (wa >= wb ? s_normal[i] : s_normal[j]);
+#ifdef DCAA_SHADE_SURFACES
+  vec3 m = ka * s_shading_normal[i] + kb * s_shading_normal[j];
+  float m_len = length(m);
+  s_shading_normal[i] = m_len > 1e-6 ? m / m_len : (wa >= wb ? s_shading_normal[i] : s_shading_normal[j]);
+#endif
   s_coverage[i] |= s_coverage[j];
   s_depth[i] = ka * s_depth[i] + kb * s_depth[j];
   s_colour[i] = ka * s_colour[i] + kb * s_colour[j];
@@ -90,6 +128,9 @@ void copy_slot(int to, int from) {
   s_depth[to] = s_depth[from];
   s_normal[to] = s_normal[from];
   s_colour[to] = s_colour[from];
+#ifdef DCAA_SHADE_SURFACES
+  s_shading_normal[to] = s_shading_normal[from];
+#endif
 }
 
 bool covers(int i, int s) {
@@ -123,6 +164,9 @@ void insert_fragment(CoverageRecord r) {
   s_depth[in_slot] = r.depth;
   s_normal[in_slot] = decode_unit_vector(r.normal);
   s_colour[in_slot] = r.colour;
+#ifdef DCAA_SHADE_SURFACES
+  s_shading_normal[in_slot] = r.shading_normal;
+#endif
   int best = -1;
   float best_dot = 0.0, best_overlap = 0.0;
   for (int i = 0; i < s_count; ++i) {
@@ -137,6 +181,13 @@ void insert_fragment(CoverageRecord r) {
     }
   }
   if (best >= 0) {
+#ifdef DCAA_SHADE_SURFACES
+    // A shaded slot has a zero shading normal: shaded or not alike, both are shaded first.
+    if (!(dot(s_shading_normal[best], s_shading_normal[in_slot]) > u_cos_normal_threshold)) {
+      make_shaded(best);
+      make_shaded(in_slot);
+    }
+#endif
     merge_into(best, in_slot);
     return;
   }
@@ -183,6 +234,8 @@ void insert_fragment(CoverageRecord r) {
     if (i == smallest || !overlaps(s_depth[i], s_depth[smallest])) continue;
     float ov = overlap_amount(s_depth[i], s_depth[smallest]);
     if (u_second_merge_into_all) {
+      make_shaded(smallest);
+      make_shaded(i);
       merge_into(i, smallest);
       target = i;
     } else if (target < 0 || ov > target_overlap) {
@@ -190,37 +243,63 @@ void insert_fragment(CoverageRecord r) {
       target_overlap = ov;
     }
   }
-  if (target >= 0 && !u_second_merge_into_all) merge_into(target, smallest);
+  if (target >= 0 && !u_second_merge_into_all) {
+    make_shaded(target);
+    make_shaded(smallest);
+    merge_into(target, smallest);
+  }
   for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
 }
 
-#if 1 + 11 * DCAA_MAX_SURFACES + 5 + 2 * 32 > 128
-#error "DCAA_MAX_SURFACES: the pending entry holds at most 5 surfaces"
+// A surface's state in a pending entry: coverage, depth plane, normal, colour (or albedo) and,
+// shading surfaces, the shading normal, as exact floats (the replay goes on where it stopped).
+#ifdef DCAA_SHADE_SURFACES
+#define DCAA_SURFACE_UINTS 14
+#else
+#define DCAA_SURFACE_UINTS 11
+#endif
+const uint SURFACE_UINTS = uint(DCAA_SURFACE_UINTS);
+#if 1 + DCAA_SURFACE_UINTS * DCAA_MAX_SURFACES + 5 + 32 > 96
+#error "DCAA_MAX_SURFACES: too many surfaces for a pending entry"
 #endif
 void save_state(uint b) {
   coverage_pending[b] = uint(s_count);
   for (int i = 0; i < s_count; ++i) {
-    uint o = b + 1u + 11u * uint(i);
+    uint o = b + 1u + SURFACE_UINTS * uint(i);
     coverage_pending[o + 0u] = s_coverage[i].x;
     coverage_pending[o + 1u] = s_coverage[i].y;
     for (int c = 0; c < 3; ++c) {
       coverage_pending[o + 2u + uint(c)] = floatBitsToUint(s_depth[i][c]);
       coverage_pending[o + 5u + uint(c)] = floatBitsToUint(s_normal[i][c]);
       coverage_pending[o + 8u + uint(c)] = floatBitsToUint(s_colour[i][c]);
+#ifdef DCAA_SHADE_SURFACES
+      coverage_pending[o + 11u + uint(c)] = floatBitsToUint(s_shading_normal[i][c]);
+#endif
     }
   }
 }
 void load_state(uint b) {
   s_count = int(coverage_pending[b]);
   for (int i = 0; i < s_count; ++i) {
-    uint o = b + 1u + 11u * uint(i);
+    uint o = b + 1u + SURFACE_UINTS * uint(i);
     s_coverage[i] = uvec2(coverage_pending[o + 0u], coverage_pending[o + 1u]);
     for (int c = 0; c < 3; ++c) {
       s_depth[i][c] = uintBitsToFloat(coverage_pending[o + 2u + uint(c)]);
       s_normal[i][c] = uintBitsToFloat(coverage_pending[o + 5u + uint(c)]);
       s_colour[i][c] = uintBitsToFloat(coverage_pending[o + 8u + uint(c)]);
+#ifdef DCAA_SHADE_SURFACES
+      s_shading_normal[i][c] = uintBitsToFloat(coverage_pending[o + 11u + uint(c)]);
+#endif
     }
   }
+}
+
+// The surface's colour at the resolve: its fragments' merged colour, or shaded once.
+vec3 surface_colour(int i) {
+#ifdef DCAA_SHADE_SURFACES
+  if (!is_shaded(i)) return shade_slot(i);
+#endif
+  return s_colour[i];
 }
 
 vec3 resolve_pixel() {
@@ -230,7 +309,8 @@ vec3 resolve_pixel() {
   float n = float(u_coverage_sample_count);
   vec3 c = vec3(0.0);
   for (int i = 0; i < s_count; ++i) {
-    c += float(counts[i]) / n * s_colour[i];
+    if (counts[i] == 0) continue;  // hidden: not shaded
+    c += float(counts[i]) / n * surface_colour(i);
     covered += counts[i];
   }
   return c + float(u_coverage_sample_count - covered) / n * u_background;
@@ -348,8 +428,8 @@ void main() {
   bool started = (flags & 1u) != 0u;
   h_size = int(coverage_pending[b + 4u]);
   for (int k = 0; k < h_size; ++k) {
-    h_keys[k] = coverage_pending[b + 5u + uint(k)];
-    h_indices[k] = coverage_pending[b + 5u + uint(SORT_SLOTS + k)];
+    h_indices[k] = coverage_pending[b + 5u + uint(k)];
+    h_keys[k] = coverage_records[h_indices[k] * COVERAGE_RECORD_UINTS + 1u];
   }
   load_state(b + PENDING_STATE);
   bool done = false;
@@ -381,10 +461,7 @@ void main() {
   coverage_pending[b + 2u] = last;
   coverage_pending[b + 3u] = cursor;
   coverage_pending[b + 4u] = uint(h_size);
-  for (int k = 0; k < h_size; ++k) {
-    coverage_pending[b + 5u + uint(k)] = h_keys[k];
-    coverage_pending[b + 5u + uint(SORT_SLOTS + k)] = h_indices[k];
-  }
+  for (int k = 0; k < h_size; ++k) coverage_pending[b + 5u + uint(k)] = h_indices[k];
   save_state(b + PENDING_STATE);
   atomicAdd(pending_active, 1u);
   discard;

@@ -6,6 +6,7 @@
 //   RSAA_SAMPLE_COUNT      subsamples per pixel (must equal the table's)
 //   RSAA_SIMILARITY_DEPTH  (optional) compare depths instead of SADP
 //   RSAA_CODE_BITS         8, 16 or 32: bits of a stored similarity code
+//   RSAA_DEPTH_ZERO_TO_ONE (optional) depth buffers follow glClipControl GL_ZERO_TO_ONE
 // Conventions: OpenGL window space (+y up); bit i of a mask = subsample i similar to the centre.
 
 #ifndef RSAA_COMMON_GLSL
@@ -29,8 +30,13 @@ bool rsaa_is_surface(uvec2 encoded_normal) { return encoded_normal.x != 0u; }
 
 // View-space position of the surface seen at window position `window_xy` with depth-buffer
 // value `depth` (the paper's ScreenToWorld, in view space: SADP does not depend on the frame).
+// RSAA_DEPTH_ZERO_TO_ONE: glClipControl's GL_ZERO_TO_ONE (NDC z = depth), else OpenGL's default.
 vec3 rsaa_view_position(vec2 window_xy, float depth, mat4 inverse_projection, vec2 viewport) {
+#ifdef RSAA_DEPTH_ZERO_TO_ONE
+  vec4 ndc = vec4(window_xy / viewport * 2.0 - 1.0, depth, 1.0);
+#else
   vec4 ndc = vec4(window_xy / viewport * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+#endif
   vec4 view = inverse_projection * ndc;
   return view.xyz / view.w;
 }

@@ -107,17 +107,17 @@ uint rsaa_split_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SA
 #endif
 
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
-// Does the centre of pixel `other` show another surface than the centre of `pixel` (normal
-// `normal`, view position `position`)? Background and surface differ; two surfaces compare with
-// the pass's similarity against the threshold.
-bool rsaa_centre_differs(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other) {
+// Does the centre of pixel `other` (its normal and view position given) show another surface than
+// the centre of `pixel`? Background and surface differ; two surfaces compare with the pass's
+// similarity against the threshold.
+bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other, uvec2 other_normal,
+                         vec3 other_position) {
   if (other == pixel) return false;
-  uvec2 other_normal = texelFetch(rsaa_post_centre_normal, other, 0).xy;
   bool a = rsaa_is_surface(normal), b = rsaa_is_surface(other_normal);
   if (a != b) return true;
   if (!a) return false;
-  return rsaa_similarity(position, rsaa_decode_normal(normal), rsaa_post_position(other),
-                         rsaa_decode_normal(other_normal)) > rsaa_threshold;
+  return rsaa_similarity(position, rsaa_decode_normal(normal), other_position, rsaa_decode_normal(other_normal)) >
+         rsaa_threshold;
 }
 
 // Multi-surface resolve (ours, RsaaSettings::multi_surface = "neighbours"). One bilinear fetch
@@ -132,52 +132,66 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   // A non-finite pixel is left to the fetch path, which keeps it (as the CPU reference).
   if (any(isnan(colour)) || any(isinf(colour))) return false;
   ivec2 last = ivec2(rsaa_viewport) - 1;
-  vec3 position = rsaa_post_position(pixel);
-  ivec2 first = ivec2(-1);
-  uvec2 first_normal = uvec2(0u);
-  vec3 first_position = vec3(0.0);
-  bool three = false;
-  uint takes_outside = 0u;  // bit i: dissimilar subsample i takes its outside pixel's colour
-  // Each of the 8 outside pixels is compared once (bit (step.y + 1) * 3 + step.x + 1).
-  uint known = 0u, differing = 0u, compared = 0u;
+  // The outside pixels the dissimilar subsamples point at: bit (step.y + 1) * 3 + step.x + 1 of
+  // the 3x3 neighbourhood.
+  uint pointed = 0u;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     if ((mask & (1u << i)) != 0u) continue;
     ivec2 step = rsaa_neighbours[i].xy;
-    uint bit = 1u << uint((step.y + 1) * 3 + step.x + 1);
-    ivec2 q = clamp(pixel + step, ivec2(0), last);
-    if ((known & bit) == 0u) {
-      known |= bit;
-      if (rsaa_centre_differs(pixel, centre_normal, position, q)) differing |= bit;
-    }
-    if ((differing & bit) == 0u) continue;
-    takes_outside |= 1u << i;
-    if (first.x < 0) {
-      first = q;
-      first_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
-      first_position = rsaa_post_position(q);
-      compared |= bit;
-    } else if (!three && (compared & bit) == 0u) {
-      compared |= bit;
-      three = rsaa_centre_differs(first, first_normal, first_position, q);
-    }
+    pointed |= 1u << uint((step.y + 1) * 3 + step.x + 1);
   }
+  // Each of them read and compared with the centre once (a driver that runs every branch for a
+  // whole SIMD batch, as llvmpipe, pays for each fetch written, taken or not).
+  vec3 position = rsaa_post_position(pixel);
+  ivec2 q[9];
+  uvec2 q_normal[9];
+  vec3 q_position[9], q_colour[9];
+  uint differing = 0u;
+  for (int b = 0; b < 9; ++b) {
+    q[b] = clamp(pixel + ivec2(b % 3 - 1, b / 3 - 1), ivec2(0), last);
+    q_normal[b] = uvec2(0u), q_position[b] = vec3(0.0), q_colour[b] = colour.rgb;
+    if ((pointed & (1u << uint(b))) == 0u) continue;
+    q_normal[b] = texelFetch(rsaa_post_centre_normal, q[b], 0).xy;
+    q_position[b] = rsaa_post_position(q[b]);
+    vec3 outside = texelFetch(rsaa_colour, q[b], 0).rgb;
+    // As the fetch path: a NaN or infinite neighbour never spreads into this pixel.
+    if (!any(isnan(outside)) && !any(isinf(outside))) q_colour[b] = outside;
+    if (rsaa_centres_differ(pixel, centre_normal, position, q[b], q_normal[b], q_position[b]))
+      differing |= 1u << uint(b);
+  }
+  // 3+ surfaces: a second differing outside pixel that differs from the first one too.
+  int first = -1;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    ivec2 step = rsaa_neighbours[i].xy;
+    int b = (step.y + 1) * 3 + step.x + 1;
+    if (first < 0 && (mask & (1u << i)) == 0u && (differing & (1u << uint(b))) != 0u) first = b;
+  }
+  if (first < 0) return false;
+  bool three = false;
+  for (int b = 0; b < 9; ++b)
+    if (b != first && (differing & (1u << uint(b))) != 0u)
+      three = three || rsaa_centres_differ(q[first], q_normal[first], q_position[first], q[b], q_normal[b], q_position[b]);
   if (!three) return false;
+  // The mean over the subsamples: a similar one takes the centre's colour, a dissimilar one the
+  // colour of its outside pixel where that pixel shows another surface.
   vec3 sum = vec3(0.0);
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    vec3 c = colour.rgb;
-    if ((takes_outside & (1u << i)) != 0u) {
-      vec3 outside = texelFetch(rsaa_colour, clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last), 0).rgb;
-      // As the fetch below: a NaN or infinite neighbour never spreads into this pixel.
-      if (!any(isnan(outside)) && !any(isinf(outside))) c = outside;
-    }
-    sum += c;
+    ivec2 step = rsaa_neighbours[i].xy;
+    int b = (step.y + 1) * 3 + step.x + 1;
+    bool outside = (mask & (1u << i)) == 0u && (differing & (1u << uint(b))) != 0u;
+    sum += outside ? q_colour[b] : colour.rgb;
   }
   resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
   return true;
 }
 #endif
 
-vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
+// The pixel's similarity mask (paper section 2.2) from its subsamples' codes, with the decoded
+// similarities and the centre's normal that the resolve reads further. The all-similar mask means
+// rsaa_resolve() keeps the pixel's colour: the cheap test an edge pass runs for every pixel
+// (rsaa_post_edges.frag). Most pixels leave early: every subsample on the centre's surface (code 1
+// = similarity 0), or a background pixel whose subsamples see no surface (code 0) or its surface.
+uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out uvec2 centre_normal) {
   uint codes[RSAA_SAMPLE_COUNT];
 #ifndef RSAA_PREPASS_MSAA
   uvec4 code_texels[RSAA_CODE_TEXTURES];
@@ -202,24 +216,28 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
 #endif
     any_different = any_different || codes[i] > 1u;
     any_uncovered = any_uncovered || codes[i] == 0u;
+    similarity[i] = 0.0;
   }
-  vec4 colour = texelFetch(rsaa_colour, pixel, 0);
-  mask = RSAA_ALL_SIMILAR;
-  // Most pixels: every subsample on the centre's surface (code 1 = similarity 0), or a background
-  // pixel whose subsamples see no surface (code 0) or its surface. Their colour stays.
-  if (!any_different && !any_uncovered) return colour;
-  uvec2 centre_normal = texelFetch(rsaa_post_centre_normal, pixel, 0).xy;
+  centre_normal = uvec2(0u);
+  if (!any_different && !any_uncovered) return RSAA_ALL_SIMILAR;
+  centre_normal = texelFetch(rsaa_post_centre_normal, pixel, 0).xy;
   bool centre_is_surface = rsaa_is_surface(centre_normal);
-  if (!any_different && !centre_is_surface) return colour;
-
-  float similarity[RSAA_SAMPLE_COUNT];
+  if (!any_different && !centre_is_surface) return RSAA_ALL_SIMILAR;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) similarity[i] = rsaa_decode_similarity(codes[i], centre_is_surface);
   float split;
-  mask = rsaa_classify(similarity, rsaa_threshold, split);
+  return rsaa_classify(similarity, rsaa_threshold, split);
+}
+
+vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
+  float similarity[RSAA_SAMPLE_COUNT];
+  uvec2 centre_normal;
+  mask = rsaa_pixel_mask(pixel, similarity, centre_normal);
+  vec4 colour = texelFetch(rsaa_colour, pixel, 0);
   if (mask == RSAA_ALL_SIMILAR) return colour;
 #ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
   mask = rsaa_split_check(pixel, centre_normal, similarity, mask);
 #endif
+  bool centre_is_surface = rsaa_is_surface(centre_normal);
   vec2 offset;
   int representative;
   rsaa_table_entry(mask, offset, representative);
@@ -242,7 +260,9 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
 #endif
   // A zero offset keeps the texel exactly (a filtered fetch at the texel centre may not).
   if (offset == vec2(0.0)) return colour;
-  vec4 fetched = texture(rsaa_colour, (vec2(pixel) + 0.5 + offset) / rsaa_viewport);
+  // Level 0, bilinear (the magnification filter) in every stage: implicit derivatives would turn
+  // to the minification filter where neighbouring pixels' offsets differ.
+  vec4 fetched = textureLod(rsaa_colour, (vec2(pixel) + 0.5 + offset) / rsaa_viewport, 0.0);
   // As the CPU reference: a NaN or infinite neighbour never spreads into this pixel.
   return any(isnan(fetched)) || any(isinf(fetched)) ? colour : fetched;
 }

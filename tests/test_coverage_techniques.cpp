@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/reference/dcaa.h"
+#include "core/reference/scene_shading.h"
 #include "core/reference/dynamic_coverage.h"
 #include "core/reference/halfplane_lut.h"
 
@@ -127,6 +128,50 @@ TEST(Dcaa, MoreSurfacesThanSlotsAllAtOneDepth) {
   EXPECT_EQ(kept, all);  // everything overlaps in depth, so everything is merged, nothing dropped
   const Rgb c = pixel.resolve(dcaa_coverage_pattern(), {0, 0, 0});
   EXPECT_TRUE(finite(c));
+}
+
+// Shading surfaces once (dcaa --shade surface): a shader that reads the albedo's red channel
+// and the shading normal's x shows what was merged and when it was shaded.
+TEST(Dcaa, ShadesSurfacesOnceFromMergedAttributes) {
+  const SamplePattern pattern = dcaa_coverage_pattern();
+  const DcaaSurfaceShader shader = [](const DcaaSurface& s) { return Rgb{s.albedo.r, s.shading_normal.x, 0.0f}; };
+  const auto with_inputs = [](CoverageFragment f, float albedo, float normal_x) {
+    f.colour = {};
+    f.albedo = {albedo, 0.0f, 0.0f};
+    f.shading_normal = normalized({normal_x, 0.0f, 1.0f});
+    return f;
+  };
+  // Two triangles of one surface (aligned facets, disjoint coverage: first merge), 48 and 16
+  // samples, shading normals 5.7 degrees apart: albedo weighted 3:1, shading normals averaged and
+  // renormalised, shaded once. 22.6 degrees apart (beyond the pi/16 cone: a bevel's normals),
+  // each is shaded and the colours are merged.
+  for (float x : {0.05f, 0.2f}) {
+    DcaaPixel pixel(dcaa_settings("surface"), &pattern, shader);
+    pixel.insert(with_inputs(fragment(0, 0x0000'FFFF'FFFF'FFFFull, 0.5f, 0.0f, {}), 0.8f, x));
+    EXPECT_EQ(pixel.insert(with_inputs(fragment(1, 0xFFFF'0000'0000'0000ull, 0.5f, 0.0f, {}), 0.4f, -x)),
+              DcaaEvent::Merged);
+    ASSERT_EQ(pixel.surfaces().size(), 1u);
+    const Normal3 a = normalized({x, 0, 1}), b = normalized({-x, 0, 1});
+    const Normal3 mean = normalized({0.75f * a.x + 0.25f * b.x, 0.0f, 0.75f * a.z + 0.25f * b.z});
+    const bool once = x < 0.1f;
+    const Rgb c = pixel.resolve(pattern, {0, 0, 1});
+    EXPECT_NEAR(c.r, 0.7f, 1e-6f) << x;
+    EXPECT_NEAR(c.g, once ? mean.x : 0.75f * a.x + 0.25f * b.x, 1e-6f) << x;
+    EXPECT_EQ(pixel.shading_invocations(pattern), once ? 1 : 2) << x;
+  }
+
+  // Five surfaces at different angles in four slots: the second merge shades both surfaces
+  // first and merges their colours (a mean normal would light neither); a hidden surface is
+  // never shaded.
+  DcaaPixel full(dcaa_settings("surface"), &pattern, shader);
+  for (int i = 0; i < 4; ++i)
+    full.insert(with_inputs(fragment(i, Mask{0xFFFF} << (16 * i), 0.5f, 0.5f * float(i), {}), 0.2f * float(i + 1),
+                            0.3f * float(i)));
+  EXPECT_EQ(full.insert(with_inputs(fragment(4, 0xFFull, 0.45f, 2.5f, {}), 1.0f, -0.5f)), DcaaEvent::SecondMerge);
+  int shaded = 0;
+  for (const DcaaSurface& s : full.surfaces()) shaded += s.shaded;
+  EXPECT_EQ(shaded, 1);
+  EXPECT_EQ(full.shading_invocations(pattern), 2 + 3);  // two at the merge, three at the resolve
 }
 
 TEST(Dcaa, IgnoresEmptyAndNonFiniteFragments) {

@@ -1,7 +1,9 @@
 // The drop-in pass's contract with an engine (runtime/rsaa_pass.h): a missing or wrong frame
 // texture is an error naming the field, a callback that draws with another program is an
 // error, and the engine's GL state is as it was after both calls.
+#include <cstdio>
 #include <functional>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -246,6 +248,10 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glBindSampler(0, nearest);
   glEnablei(GL_BLEND, 1);
   glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  // A depth range and polygon offset that would move the resolve pass's depth-tested triangle.
+  glDepthRange(0.0, 0.0);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(0.0f, -1.0e6f);
 
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
   const RsaaFrame frame = scene.frame();
@@ -295,6 +301,10 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(GLuint(sampler), nearest);
   EXPECT_TRUE(glIsEnabledi(GL_BLEND, 1));
   EXPECT_FALSE(mask1[0] || mask1[1] || mask1[2] || mask1[3]);
+  GLdouble depth_range[2] = {1.0, 1.0};
+  glGetDoublev(GL_DEPTH_RANGE, depth_range);
+  EXPECT_EQ(depth_range[1], 0.0);
+  EXPECT_TRUE(glIsEnabled(GL_POLYGON_OFFSET_FILL));
 
   // The engine's state did not reach the pass: the same frame without it gives the same image.
   glDisable(GL_SCISSOR_TEST);
@@ -306,6 +316,8 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glBindSampler(0, 0);
   glDeleteSamplers(1, &nearest);
   glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthRange(0.0, 1.0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
   const gl::Texture clean_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   scene.render_subsamples(pass);
   pass.resolve(frame, clean_output.get());
@@ -351,6 +363,153 @@ TEST_F(RsaaPassApi, NearestColourOtherClipControlOrAMovedBlockAreRefused) {
     EXPECT_NE(std::string(e.what()).find("reads RsaaUniforms at binding 5"), std::string::npos) << e.what();
   }
   gl::check("after the refusals");
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// Only the magnification filter matters: the resampling fetch samples level 0 bilinearly whatever
+// the minification filter (implicit derivatives differ where neighbouring offsets differ and would
+// select it), so a colour texture with nearest minification gives the same image.
+TEST_F(RsaaPassApi, TheColoursMinificationFilterDoesNotMatter) {
+  const test::SceneFrame scene("builtin:edges", kWidth, kHeight);
+  RsaaPass pass(test::paper_resolve(), kWidth, kHeight);
+  scene.render_subsamples(pass);
+  const RsaaFrame frame = scene.frame();
+  const gl::Texture linear_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(frame, linear_output.get());
+  glTextureParameteri(frame.colour, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  const gl::Texture nearest_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  pass.resolve(frame, nearest_output.get());
+  glTextureParameteri(frame.colour, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  const Image a = read_back_image(linear_output.get(), kWidth, kHeight);
+  const Image b = read_back_image(nearest_output.get(), kWidth, kHeight);
+  const Image one_x = read_back_image(frame.colour, kWidth, kHeight);
+  int differing = 0, resampled = 0;
+  for (std::size_t p = 0; p < a.pixels.size(); ++p) {
+    differing += a.pixels[p].r != b.pixels[p].r || a.pixels[p].g != b.pixels[p].g || a.pixels[p].b != b.pixels[p].b;
+    resampled += a.pixels[p].r != one_x.pixels[p].r;
+  }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GT(resampled, 20);
+}
+
+// The two-pass post-process (an edge pass, then the resolve where it marked a pixel) gives the
+// single pass's image and masks, bit for bit, for the default options and the paper's resolve
+// with each authentication, on scenes with silhouettes, thin parts and many small triangles.
+TEST_F(RsaaPassApi, TheEdgePassGivesTheSinglePassImageAndMasks) {
+  constexpr int width = 160, height = 120;
+  for (const char* scene_name : {"builtin:default", "builtin:fence", "builtin:interpenetrating"}) {
+    const test::SceneFrame scene(scene_name, width, height);
+    std::vector<RsaaSettings> variants = {RsaaSettings{}};
+    for (int auth : {0, 1, 2}) {
+      RsaaSettings paper = test::paper_resolve();
+      paper.auth = auth;
+      variants.push_back(paper);
+    }
+    RsaaSettings depth_4x = RsaaSettings{};
+    depth_4x.pattern = "d3d4x", depth_4x.similarity = "depth";
+    variants.push_back(depth_4x);
+    for (RsaaSettings settings : variants) {
+      settings.output_mask = true;
+      std::vector<Image> images;
+      std::vector<std::vector<std::uint32_t>> masks;
+      for (const char* post : {"single", "edges"}) {
+        settings.post = post;
+        RsaaPass pass(settings, width, height);
+        scene.render_subsamples(pass);
+        const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+        const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+        pass.resolve(scene.frame(), output.get(), mask.get());
+        images.push_back(read_back_image(output.get(), width, height));
+        masks.push_back(read_back_uints(mask.get(), width, height));
+      }
+      const std::uint32_t all_similar = (1u << (settings.pattern == "d3d4x" ? 4 : 8)) - 1u;
+      int edges = 0, differing_colour = 0, differing_mask = 0;
+      for (std::size_t p = 0; p < masks[0].size(); ++p) {
+        edges += masks[0][p] != all_similar;
+        differing_mask += masks[0][p] != masks[1][p];
+        const Rgb a = images[0].pixels[p], b = images[1].pixels[p];
+        differing_colour += a.r != b.r || a.g != b.g || a.b != b.b;
+      }
+      SCOPED_TRACE(std::string(scene_name) + " " + settings.pattern + " " + settings.similarity + " auth " +
+                   std::to_string(settings.auth) + " " + settings.multi_surface);
+      EXPECT_GT(edges, 100);  // the comparison covers resolved pixels
+      EXPECT_EQ(differing_mask, 0);
+      EXPECT_EQ(differing_colour, 0);
+    }
+  }
+}
+
+// The engine's depth convention (RsaaSettings::depth): one scene drawn with glClipControl
+// GL_ZERO_TO_ONE, with and without reverse Z (the projection remapped so), gives the masks of
+// OpenGL's default convention up to float ties; a clip control or depth order other than the
+// setting's is refused.
+TEST_F(RsaaPassApi, ZeroToOneAndReverseZDepthGiveTheDefaultMasks) {
+  constexpr int width = 160, height = 120;
+  const Scene scene = load_scene("builtin:default");
+  const GpuScene gpu(scene);
+  const SceneRenderer renderer;
+  const View gl_view = make_view(choose_camera(scene, std::nullopt), width, height);
+  std::vector<std::vector<std::uint32_t>> masks;
+  for (const char* depth : {"gl", "zero-to-one", "reverse-z"}) {
+    const bool zero_to_one = std::string(depth) != "gl", reverse = std::string(depth) == "reverse-z";
+    View view = gl_view;
+    if (zero_to_one) {
+      glm::mat4 remap(1.0f);  // clip z' = (z + w) / 2, or w - (z + w) / 2 for reverse Z
+      remap[2][2] = reverse ? -0.5f : 0.5f;
+      remap[3][2] = 0.5f;
+      view.projection = remap * gl_view.projection;
+      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    }
+    const GLenum depth_func = reverse ? GL_GREATER : GL_LESS;
+    RsaaTargets targets(width, height);
+    const glm::vec3 background = gpu.background();
+    targets.clear(&background.x, reverse ? 0.0f : 1.0f);
+    targets.bind();
+    SceneRenderer::draw(gpu, view, {0.0f, 0.0f}, renderer.gbuffer_program(), depth_func);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    RsaaSettings settings;
+    settings.depth = depth;
+    settings.output_mask = true;
+    RsaaPass pass(settings, width, height);
+    const RsaaFrame frame = targets.frame(view.inverse_projection());
+    pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
+      SceneRenderer::draw(gpu, view, jitter, program, depth_func);
+    });
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+    const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+    pass.resolve(frame, output.get(), mask.get());
+    masks.push_back(read_back_uints(mask.get(), width, height));
+    if (zero_to_one) {
+      // The setting must match the GL and the projection.
+      RsaaSettings other = settings;
+      other.depth = reverse ? "zero-to-one" : "reverse-z";
+      RsaaPass wrong_order(other, width, height);
+      EXPECT_NE(invalid_argument_of([&] { wrong_order.resolve(frame, output.get()); }).find("RsaaSettings::depth"),
+                std::string::npos);
+      other.depth = "gl";
+      RsaaPass wrong_clip(other, width, height);
+      EXPECT_NE(invalid_argument_of([&] { wrong_clip.resolve(frame, output.get()); }).find("GL_NEGATIVE_ONE_TO_ONE"),
+                std::string::npos);
+    }
+    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+  }
+  constexpr std::uint32_t all_similar = 255u;
+  int edges = 0;
+  for (std::uint32_t m : masks[0]) edges += m != all_similar;
+  EXPECT_GT(edges, 200);
+  for (std::size_t k = 1; k < masks.size(); ++k) {
+    int differing = 0;
+    for (std::size_t p = 0; p < masks[0].size(); ++p) differing += masks[0][p] != masks[k][p];
+    // Float ties only: depth is stored with another precision per convention.
+    EXPECT_LE(differing, edges / 100) << "convention " << k;
+    std::printf("depth convention %zu: %d of %d edge masks differ from OpenGL's default\n", k, differing, edges);
+  }
+  gl::check("depth conventions");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // What the coverage-based techniques (DCAA, dynamic coverage) receive per pixel and triangle: a
-// shaded colour, a coverage mask over the technique's coverage samples, the depth plane of the
-// triangle over the pixel and its facet normal, in primitive (submission) order.
+// shaded colour (or, for DCAA's shading once per surface, the shading inputs: albedo and shading
+// normal), a coverage mask over the technique's coverage samples, the depth plane of the triangle
+// over the pixel and its facet normal, in primitive (submission) order.
 #pragma once
 
 #include <algorithm>
@@ -35,7 +36,12 @@ struct CoverageFragment {
   Mask coverage = 0;
   DepthPlane depth;
   Normal3 normal;  // unit facet normal, facing the viewer
-  Rgb colour;      // linear, shaded once for the fragment
+  Rgb colour;      // linear, shaded once for the fragment (dcaa --shade fragment, dyncov)
+  // dcaa --shade surface: what the scene's shading needs besides the position (which the depth
+  // plane gives): linear albedo (texture included, fetched per fragment as a G-buffer would) and
+  // the unit shading normal, facing the viewer or not (the shading is two-sided).
+  Rgb albedo;
+  Normal3 shading_normal;
 };
 
 inline bool depth_intervals_overlap(const DepthPlane& a, const DepthPlane& b) {

@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace rsaa {
 namespace {
 
 bool finite_fragment(const CoverageFragment& f) {
   return std::isfinite(f.depth.at_centre) && std::isfinite(f.depth.ddx) && std::isfinite(f.depth.ddy) &&
-         std::isfinite(f.colour.r) && std::isfinite(f.colour.g) && std::isfinite(f.colour.b);
+         std::isfinite(f.colour.r) && std::isfinite(f.colour.g) && std::isfinite(f.colour.b) &&
+         std::isfinite(f.albedo.r) && std::isfinite(f.albedo.g) && std::isfinite(f.albedo.b);
 }
 
 Normal3 viewer_normal_if_bad(Normal3 n) {
@@ -34,10 +36,17 @@ std::vector<int> front_counts(const std::vector<DcaaSurface>& surfaces, const Sa
   return counts;
 }
 
+// ka a + kb b renormalised; opposite normals average to nothing: then the heavier one's.
+Normal3 weighted_normal(Normal3 a, Normal3 b, float ka, float kb, bool a_heavier) {
+  const Normal3 n{ka * a.x + kb * b.x, ka * a.y + kb * b.y, ka * a.z + kb * b.z};
+  const float len = std::sqrt(dot(n, n));
+  return len > 1e-6f ? Normal3{n.x / len, n.y / len, n.z / len} : (a_heavier ? a : b);
+}
+
 }  // namespace
 
-DcaaPixel::DcaaPixel(DcaaSettings settings, const SamplePattern* coverage_pattern)
-    : settings_(settings), pattern_(coverage_pattern) {
+DcaaPixel::DcaaPixel(DcaaSettings settings, const SamplePattern* coverage_pattern, DcaaSurfaceShader shade)
+    : settings_(settings), pattern_(coverage_pattern), shade_(std::move(shade)) {
   if (settings.per_sample_visibility && !coverage_pattern)
     throw std::invalid_argument("DcaaPixel: per-sample visibility needs the coverage pattern");
 }
@@ -63,18 +72,27 @@ DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b) {
   m.coverage = a.coverage | b.coverage;
   m.depth = {ka * a.depth.at_centre + kb * b.depth.at_centre, ka * a.depth.ddx + kb * b.depth.ddx,
              ka * a.depth.ddy + kb * b.depth.ddy};
-  const Normal3 n{ka * a.normal.x + kb * b.normal.x, ka * a.normal.y + kb * b.normal.y,
-                  ka * a.normal.z + kb * b.normal.z};
-  const float len = std::sqrt(dot(n, n));
-  // Opposite normals average to nothing: keep the heavier one's.
-  m.normal = len > 1e-6f ? Normal3{n.x / len, n.y / len, n.z / len} : (wa >= wb ? a.normal : b.normal);
+  m.normal = weighted_normal(a.normal, b.normal, ka, kb, wa >= wb);
+  m.shading_normal = weighted_normal(a.shading_normal, b.shading_normal, ka, kb, wa >= wb);
   m.colour = {ka * a.colour.r + kb * b.colour.r, ka * a.colour.g + kb * b.colour.g, ka * a.colour.b + kb * b.colour.b};
+  m.albedo = {ka * a.albedo.r + kb * b.albedo.r, ka * a.albedo.g + kb * b.albedo.g, ka * a.albedo.b + kb * b.albedo.b};
+  m.shaded = a.shaded && b.shaded;
   return m;
+}
+
+DcaaSurface DcaaPixel::shaded(const DcaaSurface& s) {
+  if (s.shaded) return s;
+  DcaaSurface out = s;
+  out.colour = shade_(s);
+  out.shaded = true;
+  ++merge_shadings_;
+  return out;
 }
 
 DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
   if (f.coverage == 0 || !finite_fragment(f)) return DcaaEvent::Ignored;
-  const DcaaSurface in{f.coverage, f.depth, viewer_normal_if_bad(f.normal), f.colour};
+  const DcaaSurface in{f.coverage, f.depth, viewer_normal_if_bad(f.normal), f.colour, f.albedo,
+                       viewer_normal_if_bad(f.shading_normal), !shade_};
 
   int best = -1;
   float best_dot = 0.0f, best_overlap = 0.0f;
@@ -86,7 +104,12 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
     if (best < 0 || d > best_dot || (d == best_dot && overlap > best_overlap)) best = i, best_dot = d, best_overlap = overlap;
   }
   if (best >= 0) {
-    surfaces_[best] = merge_surfaces(surfaces_[best], in);
+    // Shading surfaces, a merge whose shading normals differ beyond the cone (a bevel's normals
+    // extrapolated to the pixel centre) or into a surface already shaded shades both first.
+    const bool bake = shade_ && (surfaces_[best].shaded ||
+                                 !(dot(surfaces_[best].shading_normal, in.shading_normal) > settings_.cos_normal_threshold));
+    if (bake) surfaces_[best] = shaded(surfaces_[best]);
+    surfaces_[best] = merge_surfaces(surfaces_[best], bake ? shaded(in) : in);
     return DcaaEvent::Merged;
   }
   if (int(surfaces_.size()) < settings_.max_surfaces) {
@@ -124,11 +147,15 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
   for (int i = 0; i < n && (settings_.merge_hidden || smallest_visible > 0); ++i) {
     if (i == smallest || !depth_intervals_overlap(candidates[i].depth, candidates[smallest].depth)) continue;
     const float overlap = depth_overlap_amount(candidates[i].depth, candidates[smallest].depth);
-    if (settings_.second_merge_into_all) candidates[i] = merge_surfaces(candidates[i], candidates[smallest]), target = i;
-    else if (target < 0 || overlap > target_overlap) target = i, target_overlap = overlap;
+    if (settings_.second_merge_into_all) {
+      candidates[smallest] = shaded(candidates[smallest]);
+      candidates[i] = merge_surfaces(shaded(candidates[i]), candidates[smallest]), target = i;
+    } else if (target < 0 || overlap > target_overlap) {
+      target = i, target_overlap = overlap;
+    }
   }
   if (target >= 0 && !settings_.second_merge_into_all)
-    candidates[target] = merge_surfaces(candidates[target], candidates[smallest]);
+    candidates[target] = merge_surfaces(shaded(candidates[target]), shaded(candidates[smallest]));
   surfaces_.clear();
   for (int i = 0; i < n; ++i)
     if (i != smallest) surfaces_.push_back(candidates[i]);
@@ -139,14 +166,24 @@ std::vector<int> DcaaPixel::visible_counts(const SamplePattern& pattern) const {
   return front_counts(surfaces_, pattern);
 }
 
+int DcaaPixel::shading_invocations(const SamplePattern& pattern) const {
+  if (!shade_) return 0;
+  const std::vector<int> counts = visible_counts(pattern);
+  int n = merge_shadings_;
+  for (std::size_t i = 0; i < surfaces_.size(); ++i) n += counts[i] > 0 && !surfaces_[i].shaded;
+  return n;
+}
+
 Rgb DcaaPixel::resolve(const SamplePattern& pattern, Rgb background) const {
   const std::vector<int> counts = visible_counts(pattern);
   const float n = float(pattern.size());
   int covered = 0;
   Rgb c;
   for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+    if (counts[i] == 0) continue;  // hidden: not shaded
     const float w = float(counts[i]) / n;
-    c.r += w * surfaces_[i].colour.r, c.g += w * surfaces_[i].colour.g, c.b += w * surfaces_[i].colour.b;
+    const Rgb colour = surfaces_[i].shaded ? surfaces_[i].colour : shade_(surfaces_[i]);
+    c.r += w * colour.r, c.g += w * colour.g, c.b += w * colour.b;
     covered += counts[i];
   }
   const float rest = float(pattern.size() - covered) / n;

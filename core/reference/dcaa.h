@@ -5,6 +5,7 @@
 // implements the same rules; this is the oracle its tests compare against.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,22 @@ struct DcaaSurface {
   DepthPlane depth;
   Normal3 normal;
   Rgb colour;
+  // Shading once per surface (dcaa --shade surface): the merged shading inputs, until `shaded`.
+  Rgb albedo;
+  Normal3 shading_normal;
+  bool shaded = true;  // colour holds the surface's colour (always, shading fragments)
 };
+
+// How a surface gets its colour: `dcaa --shade fragment` keeps each fragment's colour (merged by
+// coverage); `surface` shades each visible surface once from its merged albedo and shading normal
+// at the view position its depth plane gives at the pixel centre (the caller knows the camera: it
+// maps the surface to that position and shades it). A second merge (slots full) joins surfaces
+// that need not be alike (a top face into a side face): shading their mean normal would light
+// neither, so both are shaded first and their colours merged, as fragments' are; so is a first
+// merge whose shading normals differ beyond the cone (fragments of a rounded bevel, whose
+// normals extrapolated to the pixel centre spread far wider than their facets): the specular
+// lobe of their mean is not the mean of their lobes.
+using DcaaSurfaceShader = std::function<Rgb(const DcaaSurface&)>;
 
 // `dcaa --rules`: "paper" = Algorithm 1 as written (DcaaSettings{}); "surface" (the default) =
 // the answers dynamic coverage's surface rules give to the same questions (core/reference/dynamic_coverage.h):
@@ -48,8 +64,9 @@ struct DcaaSurface {
 // std::invalid_argument for another name.
 DcaaSettings dcaa_settings(const std::string& rules);
 
-// Merge(a, b) of the paper: normals, depth planes and colours averaged weighted by coverage
-// counts (the normal renormalised), coverage ORed. Returns the merged surface.
+// Merge(a, b) of the paper: normals, depth planes, colours and the shading inputs (albedo,
+// shading normal) averaged weighted by coverage counts (normals renormalised), coverage ORed.
+// Returns the merged surface.
 DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b);
 
 // What insert() did with a fragment, for tests and statistics.
@@ -57,8 +74,10 @@ enum class DcaaEvent { Ignored, Merged, Stored, SecondMerge, Discarded };
 
 class DcaaPixel {
  public:
-  // `coverage_pattern` (kept by pointer): needed when settings.per_sample_visibility.
-  explicit DcaaPixel(DcaaSettings settings = {}, const SamplePattern* coverage_pattern = nullptr);
+  // `coverage_pattern` (kept by pointer): needed when settings.per_sample_visibility. `shade`:
+  // shade surfaces once (fragments carry albedo and shading normal), else fragments' colours.
+  explicit DcaaPixel(DcaaSettings settings = {}, const SamplePattern* coverage_pattern = nullptr,
+                     DcaaSurfaceShader shade = {});
 
   // Algorithm 1. Fragments with no coverage or a non-finite depth or colour are ignored (they
   // cover no sample or cannot be weighted); a non-finite normal counts as facing the viewer.
@@ -79,14 +98,21 @@ class DcaaPixel {
   // smallest depth at the sample (ties: the earlier surface); samples no surface covers show
   // the background (the clear colour: our scenes have no background geometry).
   // C = sum_i n_i / N c_i + (N - sum n_i) / N background.
+  // Shading surfaces, each one that shows a sample and is not shaded yet is shaded once.
   Rgb resolve(const SamplePattern& coverage_pattern, Rgb background) const;
+  // Shading invocations so far (second merges) plus those resolve() makes.
+  int shading_invocations(const SamplePattern& coverage_pattern) const;
   // n_i of each surface after the depth resolve.
   std::vector<int> visible_counts(const SamplePattern& coverage_pattern) const;
 
  private:
+  DcaaSurface shaded(const DcaaSurface& s);
+
   DcaaSettings settings_;
   const SamplePattern* pattern_;
+  DcaaSurfaceShader shade_;
   std::vector<DcaaSurface> surfaces_;
+  int merge_shadings_ = 0;
 };
 
 // Bytes per pixel of the paper's design: 4 surfaces of 8 B coverage + 3 B depth + 4 B normal +

@@ -1,6 +1,7 @@
-// dcaa [--rules surface|paper]: Decoupled Coverage Anti-Aliasing (seed 000) on the shared
-// fragment lists: 64 coverage samples from the half-plane LUT, at most 4 surfaces per pixel
-// merged by Algorithm 1 (paper) or with the surface rules, per sample depth resolve. The rules
+// dcaa [--rules surface|paper] [--shade fragment|surface]: Decoupled Coverage Anti-Aliasing
+// (seed 000) on the shared fragment lists: 64 coverage samples from the half-plane LUT, at most 4
+// surfaces per pixel merged by Algorithm 1 (paper) or with the surface rules, per sample depth
+// resolve; colours shaded per fragment and merged, or each surface shaded once. The rules
 // are those of core/reference/dcaa.h (the tests' oracle).
 #include "core/reference/dcaa.h"
 #include "runtime/coverage_lists.h"
@@ -20,8 +21,16 @@ void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const Dca
   glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_into_all"), settings.second_merge_into_all);
 }
 
-std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, int width, int height) {
-  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height, z_prepass);
+bool dcaa_shade_surfaces(const std::string& shade) {
+  if (shade != "fragment" && shade != "surface")
+    throw std::invalid_argument("dcaa --shade must be fragment or surface, not '" + shade + "'");
+  return shade == "surface";
+}
+
+std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, bool shade_surfaces, int width,
+                                     int height) {
+  auto t = std::make_unique<CoverageListTechnique>(dcaa_coverage_pattern(), "COVERAGE_DCAA", width, height, z_prepass,
+                                                   shade_surfaces);
   for (GLuint p : t->resolve_programs()) configure_surface_resolve(p, t->coverage_lists()->lut().pattern(), settings);
   return t;
 }
@@ -31,10 +40,11 @@ TechniqueKind dcaa_technique() {
           [](const TechniqueOptions& o) {
             if (o.samples != 0 && o.samples != 64) throw std::invalid_argument("dcaa always uses 64 coverage samples");
             dcaa_settings(o.rules);
+            dcaa_shade_surfaces(o.shade);
           },
           [](const TechniqueOptions& o) { return coverage_technique_label(o); },
           [](const TechniqueOptions& o, int width, int height) {
-            return make_dcaa(dcaa_settings(o.rules), o.z_prepass, width, height);
+            return make_dcaa(dcaa_settings(o.rules), o.z_prepass, dcaa_shade_surfaces(o.shade), width, height);
           }};
 }
 

@@ -25,6 +25,8 @@ TechniqueKind dyncov_technique() {
           [](const TechniqueOptions& o) {
             if (o.samples != 0 && o.samples != 16) throw std::invalid_argument("dyncov always uses 16 coverage samples");
             dynamic_coverage_rules(o.rules);
+            if (o.shade != "fragment" && o.shade != TechniqueOptions{}.shade)
+              throw std::invalid_argument("dyncov shades each fragment: --shade " + o.shade + " is for dcaa");
           },
           [](const TechniqueOptions& o) { return coverage_technique_label(o); },
           [](const TechniqueOptions& o, int width, int height) {

@@ -23,7 +23,8 @@ inline void reject_samples(const TechniqueOptions& o) {
 }
 // "dcaa", "dyncov seed zpre": the coverage techniques' rules and z-prepass when not the default.
 inline std::string coverage_technique_label(const TechniqueOptions& o) {
-  return o.technique + (o.rules == TechniqueOptions{}.rules ? "" : " " + o.rules) + (o.z_prepass ? " zpre" : "");
+  return o.technique + (o.rules == TechniqueOptions{}.rules ? "" : " " + o.rules) + (o.z_prepass ? " zpre" : "") +
+         (o.shade == TechniqueOptions{}.shade ? "" : " shade-" + o.shade);
 }
 
 std::unique_ptr<Technique> make_noaa(int width, int height);
@@ -32,7 +33,11 @@ std::unique_ptr<Technique> make_fxaa(int width, int height);
 std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height);
 // Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
 // z_prepass: CoverageFragmentLists::enable_z_prepass().
-std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, int width, int height);
+// shade_surfaces: dcaa --shade surface (CoverageListTechnique's shade_surfaces).
+std::unique_ptr<Technique> make_dcaa(const DcaaSettings& settings, bool z_prepass, bool shade_surfaces, int width,
+                                     int height);
+// --shade fragment | surface: true for surface; throws std::invalid_argument for another name.
+bool dcaa_shade_surfaces(const std::string& shade);
 std::unique_ptr<Technique> make_dynamic_coverage(DynamicCoverageRules rules, bool z_prepass, int width, int height);
 // Sets the uniforms of coverage_resolve.frag's COVERAGE_DCAA variant: coverage samples and the
 // DcaaSettings (dcaa, and dyncov's surface rules).

@@ -73,6 +73,10 @@ std::vector<TechniqueOptions> default_techniques() {
   multisample.prepass = "msaa";
   list.push_back(multisample);
   list.push_back(rsaa_default_without_extensions());
+  // The defaults' post-process in one pass over every pixel, beside the two-pass one (same image).
+  TechniqueOptions single_pass = technique_options("rsaa", 8);
+  single_pass.post = "single";
+  list.push_back(single_pass);
   return list;
 }
 
@@ -243,7 +247,8 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                                            {"auth", r.options.auth},
                                            {"pattern", r.options.pattern},
                                            {"kernel", r.options.kernel},
-                                           {"rules", r.options.rules}}},
+                                           {"rules", r.options.rules},
+                                           {"shade", r.options.shade}}},
                               {"passes", passes},
                               {"frame_ms", r.frame_ms},
                               {"frame_ratio_to_noaa", r.frame_ratio},
@@ -301,6 +306,7 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       r.options.pattern = opt.at("pattern");
       r.options.kernel = opt.value("kernel", 2);
       r.options.rules = opt.value("rules", TechniqueOptions{}.rules);
+      r.options.shade = opt.value("shade", TechniqueOptions{}.shade);
       for (const auto& p : e.at("passes"))
         r.pass_medians.push_back({p.at("pass"), p.at("gl_timer_ms"), p.at("wall_ms")});
       r.frame_ms = e.at("frame_ms");

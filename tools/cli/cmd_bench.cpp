@@ -111,8 +111,11 @@ int run_bench_command(BenchArgs a) {
       if (t.technique == "noaa" || std::find(keep.begin(), keep.end(), label) != keep.end()) chosen.push_back(t);
     }
     for (const std::string& k : keep)
-      if (std::none_of(chosen.begin(), chosen.end(), [&](const TechniqueOptions& t) { return technique_label(t) == k; }))
-        throw std::invalid_argument("--techniques: no technique labelled '" + k + "' in the bench");
+      if (std::none_of(chosen.begin(), chosen.end(), [&](const TechniqueOptions& t) { return technique_label(t) == k; })) {
+        std::string labels;
+        for (const TechniqueOptions& t : o.techniques) labels += (labels.empty() ? "'" : ", '") + technique_label(t) + "'";
+        throw std::invalid_argument("--techniques: no technique labelled '" + k + "' in the bench; its labels: " + labels);
+      }
     o.techniques = chosen;
   }
   if (!a.table.empty()) {  // RSAA with the user's table, beside the built-in ones

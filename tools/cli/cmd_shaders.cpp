@@ -35,7 +35,8 @@ std::string command_line(const ShadersArgs& a) {
          " --similarity " + s.similarity + " --auth " + std::to_string(s.auth) + " --code-bits " +
          std::to_string(s.code_bits) + (s.split_cap > 0.0f ? " --split-cap " + cap_text(s.split_cap) : "") +
          (s.multi_surface == "fetch" ? "" : " --multi-surface " + s.multi_surface) +
-         (s.split_check == "off" ? "" : " --split-check " + s.split_check) + " --prepass " + s.prepass +
+         (s.split_check == "off" ? "" : " --split-check " + s.split_check) +
+         (s.depth == "gl" ? "" : " --depth " + s.depth) + " --prepass " + s.prepass +
          " --first-unit " +
          std::to_string(s.prepass_first_unit) + " --uniform-binding " + std::to_string(s.uniform_binding);
 }
@@ -119,6 +120,11 @@ Action add_shaders_command(CLI::App& app) {
   cmd->add_option("--split-check", s.split_check, "Ours: neighbours (subsamples above the threshold) | off (the paper's)")
       ->capture_default_str()
       ->check(CLI::IsMember({"off", "neighbours"}));
+  cmd->add_option("--depth", s.depth,
+                  "The engine's depth convention: gl (glClipControl GL_NEGATIVE_ONE_TO_ONE, OpenGL's default) | "
+                  "zero-to-one (GL_ZERO_TO_ONE) | reverse-z (GL_ZERO_TO_ONE, nearer is greater)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"gl", "zero-to-one", "reverse-z"}));
   cmd->add_option("--prepass", s.prepass, "jittered (one draw per subsample) | msaa (one multisample draw)")
       ->capture_default_str()
       ->check(CLI::IsMember({"jittered", "msaa"}));

@@ -51,6 +51,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "dissimilar when the outside pixel in its direction shows a surface about as different) | "
                   "off (the paper's split decides)")
       ->capture_default_str();
+  cmd->add_option("--post", o.post,
+                  "rsaa post-process: edges (an edge pass marks the pixels to resolve, the resolve runs only "
+                  "there) | single (one pass over every pixel); the same image")
+      ->capture_default_str();
   cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
       ->check(kWholeNumber);
@@ -71,6 +75,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
   cmd->add_option("--agaa-aggregates", o.agaa_aggregates, "agaa: c, aggregates per pixel (1-4)")->capture_default_str();
   cmd->add_option("--agaa-k-pixels", o.agaa_k_pixels,
                   "agaa: characteristic length in pixel footprints at the surface (independent of the units)")
+      ->capture_default_str();
+  cmd->add_option("--shade", o.shade,
+                  "dcaa: fragment (each fragment shaded at the pixel centre, colours merged) | surface (fragments "
+                  "carry albedo and shading normal, each visible surface shaded once from its merged attributes)")
       ->capture_default_str();
   cmd->add_option("--rules", o.rules,
                   "dyncov: surface (merge fragments of one surface, per-sample visibility) | seed (the seed's "
