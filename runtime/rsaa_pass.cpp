@@ -309,6 +309,8 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
     throw std::invalid_argument("RSAA split_cap must be 0 (the paper's split) or a finite number >= 1");
   if (settings.multi_surface != "fetch" && settings.multi_surface != "neighbours")
     throw std::invalid_argument("RSAA multi_surface must be fetch or neighbours, not '" + settings.multi_surface + "'");
+  if (settings.split_check != "off" && settings.split_check != "neighbours")
+    throw std::invalid_argument("RSAA split_check must be off or neighbours, not '" + settings.split_check + "'");
   if (settings.depth != "gl" && settings.depth != "zero-to-one" && settings.depth != "reverse-z")
     throw std::invalid_argument("RSAA depth must be gl, zero-to-one or reverse-z, not '" + settings.depth + "'");
   if (zero_to_one(settings)) defines += "#define RSAA_DEPTH_ZERO_TO_ONE\n";
@@ -320,6 +322,7 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
     defines += "#define RSAA_SPLIT_CAP " + literal + "\n";
   }
   if (settings.multi_surface == "neighbours") defines += "#define RSAA_MULTI_SURFACE_NEIGHBOURS\n";
+  if (settings.split_check == "neighbours") defines += "#define RSAA_SPLIT_CHECK_NEIGHBOURS\n";
   if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
   return defines;
 }

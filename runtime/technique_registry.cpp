@@ -38,6 +38,7 @@ std::vector<TechniqueOptions> rsaa_variants() {
         o.auth = auth;
         o.split_cap = 0.0;  // the paper's split and resolve
         o.multi_surface = "fetch";
+        o.split_check = "off";
         list.push_back(o);
       }
   return list;
@@ -49,8 +50,10 @@ std::vector<TechniqueOptions> rsaa_defaults() {
 
 TechniqueOptions rsaa_default_without_extensions() {
   TechniqueOptions o = technique_options("rsaa", 8);
+  o.auth = 0;
   o.split_cap = 0.0;
   o.multi_surface = "fetch";
+  o.split_check = "off";
   return o;
 }
 

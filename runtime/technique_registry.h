@@ -19,7 +19,7 @@ struct TechniqueOptions {
   std::string technique = "noaa";
   int samples = 0;                   // 0: the technique's default
   std::string similarity = "sadp-plane";  // rsaa: sadp-plane (default) | sadp | depth (the paper's)
-  int auth = 0;                      // rsaa: 0 none, 1 post-pass, 2 pre-pass
+  int auth = 1;                      // rsaa: 0 none, 1 post-pass (default), 2 pre-pass
   double threshold = -1.0;           // rsaa: < 0 = default (0.4 SADP, 0.4 % depth)
   std::string pattern;               // rsaa 4x: gl4x (default) | d3d4x
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
@@ -27,6 +27,7 @@ struct TechniqueOptions {
   std::string prepass = "jittered";  // rsaa: jittered | msaa (RsaaSettings::prepass)
   double split_cap = 1.5;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
   std::string multi_surface = "neighbours";  // rsaa: neighbours (default) | fetch (the paper's)
+  std::string split_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string post = "edges";        // rsaa: edges (two passes) | single (RsaaSettings::post)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
@@ -63,11 +64,11 @@ const std::vector<std::string>& technique_names();
 TechniqueOptions technique_options(const std::string& technique, int samples = 0);
 // The paper's 12 RSAA variants: samples 4 | 8 x similarity sadp | depth x auth 0 | 1 | 2.
 std::vector<TechniqueOptions> rsaa_variants();
-// RSAA 4x and 8x with this project's default options (sadp-plane, auth 0, the split capped at
-// 1.5 thresholds, the multi-surface resolve).
+// RSAA 4x and 8x with this project's default options (sadp-plane, post-pass authentication, the
+// split capped at 1.5 thresholds, the multi-surface resolve).
 std::vector<TechniqueOptions> rsaa_defaults();
-// RSAA 8x sadp-plane with the paper's resolve (no split cap, one fetch everywhere): the default
-// before the extensions, measured beside them.
+// RSAA 8x sadp-plane auth 0 with the paper's resolve (no split cap, one fetch everywhere): the
+// default before the extensions, measured beside them.
 TechniqueOptions rsaa_default_without_extensions();
 
 // The registry's validate, label and make for options.technique. validate throws

@@ -15,6 +15,8 @@
 //   RSAA_SPLIT_CAP           (optional) cap of the k-means split, x threshold (rsaa_common.glsl)
 //   RSAA_MULTI_SURFACE_NEIGHBOURS  (optional) pixels whose dissimilar subsamples point at two
 //                            different surfaces: a sample average from the neighbours (below)
+//   RSAA_SPLIT_CHECK_NEIGHBOURS  (optional) a subsample above the threshold that the split calls
+//                            similar turns dissimilar when its outside pixel shows a like surface
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
@@ -78,6 +80,31 @@ vec3 rsaa_post_position(ivec2 pixel) {
   return rsaa_view_position(vec2(pixel) + 0.5, texelFetch(rsaa_post_centre_depth, pixel, 0).x,
                             rsaa_inverse_projection, rsaa_viewport);
 }
+
+#ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
+// Split check (ours, RsaaSettings::split_check = "neighbours"). The k-means split lies above the
+// threshold (up to RSAA_SPLIT_CAP x), so a subsample that differs from the centre's surface by
+// more than the threshold counts as similar beside a far more different one. It turns dissimilar
+// when the outside pixel in its direction shows a surface about as different from the centre
+// (within a factor 1.5): a second surface the 1x image holds there, not a facet of the centre's
+// own curved surface beside something else (thin wires, legs). Returns the corrected mask.
+uint rsaa_split_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask) {
+  if (!rsaa_is_surface(centre_normal)) return mask;
+  vec3 position = rsaa_post_position(pixel);
+  vec3 normal = rsaa_decode_normal(centre_normal);
+  ivec2 last = ivec2(rsaa_viewport) - 1;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    float s = similarity[i];
+    if ((mask & (1u << i)) == 0u || !(s > rsaa_threshold)) continue;
+    ivec2 q = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
+    uvec2 q_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
+    if (!rsaa_is_surface(q_normal)) continue;
+    float t = rsaa_similarity(position, normal, rsaa_post_position(q), rsaa_decode_normal(q_normal));
+    if (t * 1.5 > s && t < s * 1.5) mask &= ~(1u << i);
+  }
+  return mask;
+}
+#endif
 
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
 // Does the centre of pixel `other` (its normal and view position given) show another surface than
@@ -207,6 +234,9 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   mask = rsaa_pixel_mask(pixel, similarity, centre_normal);
   vec4 colour = texelFetch(rsaa_colour, pixel, 0);
   if (mask == RSAA_ALL_SIMILAR) return colour;
+#ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
+  mask = rsaa_split_check(pixel, centre_normal, similarity, mask);
+#endif
   bool centre_is_surface = rsaa_is_surface(centre_normal);
   vec2 offset;
   int representative;

@@ -11,7 +11,8 @@
 //   RSAA_AUTH              0 none, 1 post-pass authentication (2 is done in the pre-pass: 0 here)
 //   RSAA_CODE_BITS         8, 16 or 32: bits of a stored similarity code
 //   RSAA_SIMILARITY_DEPTH / RSAA_SIMILARITY_SADP_PLANE   (optional) as in rsaa_common.glsl
-//   RSAA_SPLIT_CAP, RSAA_MULTI_SURFACE_NEIGHBOURS          (optional) as in rsaa_post.glsl
+//   RSAA_SPLIT_CAP, RSAA_MULTI_SURFACE_NEIGHBOURS, RSAA_SPLIT_CHECK_NEIGHBOURS  (optional) as in
+//                          rsaa_post.glsl
 // Resources (registers overridable by defining RSAA_REGISTER_*):
 //   t0 colour (linear), t1 centre normal (uint2: rsaa_encode_normal, 0 = background), t2 centre
 //   depth (0 near .. 1 far), t3.. the codes: subsample i in channel i % 4 of texture i / 4, as
@@ -146,6 +147,20 @@ int2 RsaaOutsideStep(float2 sample_position) {
   return int2(sign(s) * floor(abs(s) + 0.5));
 }
 
+#ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
+// rsaa_post.glsl's rsaa_split_check for one subsample of similarity s that the split calls
+// similar: is it dissimilar after all?
+bool RsaaSplitCheckDissimilar(int2 pixel, uint2 centre_normal, int k, float s) {
+  if (!RsaaIsSurface(centre_normal) || !(s > rsaa_threshold)) return false;
+  int2 q = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[k]), int2(0, 0), int2(rsaa_viewport) - 1);
+  uint2 q_normal = rsaa_centre_normal.Load(int3(q, 0));
+  if (!RsaaIsSurface(q_normal)) return false;
+  float t = RsaaSimilarity(RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal), RsaaViewPosition(q),
+                           RsaaDecodeNormal(q_normal));
+  return t * 1.5 > s && t < s * 1.5;
+}
+#endif
+
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
 // rsaa_post.glsl's rsaa_centre_differs and rsaa_multi_surface.
 bool RsaaCentreDiffers(int2 pixel, uint2 normal, float3 position, int2 other) {
@@ -237,7 +252,11 @@ float4 RsaaResolve(int2 pixel) {
   float farthest = -1.0;
   [unroll] for (int k = 0; k < RSAA_SAMPLE_COUNT; ++k) {
     float d = dot(rsaa_sample_positions[k], rsaa_sample_positions[k]);
-    if (similarity[k] <= split) mask |= 1u << k;
+    bool similar = similarity[k] <= split;
+#ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
+    if (similar && RsaaSplitCheckDissimilar(pixel, centre_normal, k, similarity[k])) similar = false;
+#endif
+    if (similar) mask |= 1u << k;
     else if (d >= farthest) { representative = k; farthest = d; }
   }
   float2 offset = rsaa_offsets[mask];

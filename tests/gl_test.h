@@ -30,8 +30,10 @@ class GlTest : public ::testing::Test {
 // `settings` with the paper's classification and resolve (no split cap, one fetch everywhere)
 // instead of this project's defaults: for tests of the paper's algorithm and its CPU reference.
 inline RsaaSettings paper_resolve(RsaaSettings settings = {}) {
+  settings.auth = 0;  // the CPU reference has no authentication
   settings.split_cap = 0.0f;
   settings.multi_surface = "fetch";
+  settings.split_check = "off";
   return settings;
 }
 

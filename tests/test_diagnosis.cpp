@@ -64,8 +64,21 @@ TEST(Diagnosis, ClassesOracleAndTable) {
   EXPECT_LT(d.rows[int(DiagnosisClass::TwoSurfacesOneLine)].oracle_error, 4.0);
   EXPECT_GT(d.rows[int(DiagnosisClass::TwoSurfacesOneLine)].noaa_error, 1000.0);
   EXPECT_GT(d.oracle_psnr, d.noaa_psnr + 20.0);
+  // Without sample counts the exact-coverage blend knows nothing: the 1x colour.
+  EXPECT_EQ(coverage_resolve(in, 1, 1).r, 0.0f);
   const std::string md = diagnosis_markdown(d, "test");
   EXPECT_NE(md.find("2 surfaces, one-line offset | 1 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("exact coverage / no-AA"), std::string::npos) << md;
+  // With them: 16 of 64 samples white (the left neighbour's colour), 48 black (the centre's).
+  for (int y = 0; y < 3; ++y) in.surfaces[y * 3 + 1].samples = {48, 16}, in.surfaces[y * 3 + 1].total = 64;
+  EXPECT_FLOAT_EQ(coverage_resolve(in, 1, 1).r, 0.25f);
+  // A surface no neighbour centre shows takes the pixel's own colour.
+  in.surfaces[4].ids = {2, 7};
+  EXPECT_FLOAT_EQ(coverage_resolve(in, 1, 1).g, 0.0f);
+  in.surfaces[4].ids = {2, 1};
+  const Diagnosis exact = diagnose(in);
+  EXPECT_LT(exact.rows[int(DiagnosisClass::TwoSurfacesOneLine)].coverage_error, 1.0);
+  EXPECT_GT(exact.coverage_psnr, exact.noaa_psnr + 20.0);
   in.masks[4] = Mask{1} << 9;  // does not fit 8 samples
   EXPECT_THROW(diagnose(in), std::invalid_argument);
 }
@@ -78,7 +91,7 @@ TEST(Diagnosis, CommandWritesTheTableAndPictures) {
                           dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("best single fetch (oracle)"), std::string::npos) << r.output;
-  for (const char* f : {"diagnosis.md", "error_map.png", "oracle.png", "rsaa.png", "noaa.png", "reference.png"})
+  for (const char* f : {"diagnosis.md", "error_map.png", "oracle.png", "coverage.png", "rsaa.png", "noaa.png", "reference.png"})
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir.path()) / f)) << f;
   const auto bad = run_rsaa("diagnose --technique msaa --out-dir " + dir.path());
   EXPECT_NE(bad.exit_code, 0);

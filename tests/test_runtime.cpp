@@ -395,7 +395,7 @@ TEST_F(Runtime, TheOptionsBeyondThePaperAreDefaultsAndOffInThePapersVariants) {
   EXPECT_THROW(rsaa_shader_defines(bad, 8, false), std::invalid_argument);
   TechniqueOptions o = technique_options("rsaa", 8);
   o.split_cap = 3.0, o.multi_surface = "neighbours";
-  EXPECT_EQ(technique_label(o), "rsaa 8x sadp-plane auth0 cap3 ms");
+  EXPECT_EQ(technique_label(o), "rsaa 8x sadp-plane auth1 cap3 ms sc");
 }
 
 // The split cap only makes subsamples dissimilar (each changed mask is a subset of the paper's
@@ -462,7 +462,8 @@ TEST_F(Runtime, TheMultiSurfaceResolveBringsPixelsOfThreeSurfacesCloser) {
 // distant +1.93, edges +2.01, grazing +1.17, fence +0.04, star +0.06 dB; at 640x480 default
 // 38.05 -> 39.74 dB and no bench scene lower).
 TEST_F(Runtime, TheExtensionRowIsNoWorseOnAnyBuiltinScene) {
-  const RsaaSettings both;  // the defaults
+  RsaaSettings both;  // the defaults' split cap and multi-surface resolve
+  both.auth = 0;      // as the paper's resolve here: authentication has its own test below
   ASSERT_EQ(both.multi_surface, "neighbours");
   ASSERT_EQ(both.split_cap, 1.5f);
   for (const std::string& name : builtin_scene_names()) {
@@ -475,6 +476,39 @@ TEST_F(Runtime, TheExtensionRowIsNoWorseOnAnyBuiltinScene) {
     if (name == "default") EXPECT_GT(extended, paper + 0.3) << scene;
     if (name == "distant" || name == "edges" || name == "grazing") EXPECT_GT(extended, paper + 0.8) << scene;
   }
+}
+
+// Post-pass authentication is the default: on the fence's thin wires it halves offsets that would
+// fetch the background (640x480: 33.11 -> 33.82 dB); here at 160x120 it must still gain.
+TEST_F(Runtime, PostPassAuthenticationByDefaultHelpsTheFence) {
+  const RsaaSettings defaults;
+  ASSERT_EQ(defaults.auth, 1);
+  RsaaSettings without = defaults;
+  without.auth = 0;
+  const Image reference = render("builtin:fence", technique_options("ssaa", 64));
+  const double with_auth = psnr(rsaa_run("builtin:fence", defaults).image, reference);
+  const double no_auth = psnr(rsaa_run("builtin:fence", without).image, reference);
+  std::printf("fence: auth 1 %.2f dB, auth 0 %.2f dB\n", with_auth, no_auth);
+  EXPECT_GT(with_auth, no_auth + 0.03);
+}
+
+// The split check is a default: where a subsample's outside pixel shows a surface about as
+// different from the centre as the subsample is, the subsample is dissimilar even under the
+// split. On the grazing scene (160x120 here; 640x480: 50.13 -> 50.43 dB) it changes edge pixels
+// and brings the image closer to the reference.
+TEST_F(Runtime, TheSplitCheckByDefaultHelpsTheGrazingScene) {
+  const RsaaSettings defaults;
+  ASSERT_EQ(defaults.split_check, "neighbours");
+  RsaaSettings without = defaults;
+  without.split_check = "off";
+  const Image reference = render("builtin:grazing", technique_options("ssaa", 64));
+  const RsaaRun checked = rsaa_run("builtin:grazing", defaults), unchecked = rsaa_run("builtin:grazing", without);
+  std::size_t changed = 0;
+  for (std::size_t p = 0; p < checked.masks.size(); ++p) changed += checked.masks[p] != unchecked.masks[p];
+  const double with_check = psnr(checked.image, reference), no_check = psnr(unchecked.image, reference);
+  std::printf("grazing: split check %.2f dB (%zu masks changed), off %.2f dB\n", with_check, changed, no_check);
+  EXPECT_GT(changed, 5u);
+  EXPECT_GT(with_check, no_check + 0.1);
 }
 
 TEST_F(Runtime, NonFiniteColoursDoNotSpreadInTheGlPostProcess) {

@@ -216,7 +216,7 @@ gl::Texture upside_down(GLuint texture, GLenum format, int width, int height, GL
 // the top; depth in [0, 1] through its inverse projection): the same image, upside down.
 // Without and with post-pass authentication (which reads depth, normals and neighbour steps);
 // parameter 2: without authentication, with the options beyond the paper (split cap, the
-// multi-surface resolve, which reads neighbour steps, normals, depth and colours).
+// multi-surface resolve, which reads neighbour steps, normals, depth and colours, the split check).
 class HlslPostProcessOnGl : public test::GlTest, public ::testing::WithParamInterface<int> {};
 
 TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
@@ -227,10 +227,12 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   std::string extensions;
   settings.split_cap = 0.0f;
   settings.multi_surface = "fetch";
+  settings.split_check = "off";
   if (GetParam() == 2) {
     settings.split_cap = 2.5f;
     settings.multi_surface = "neighbours";
-    extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS";
+    settings.split_check = "neighbours";
+    extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS -DRSAA_SPLIT_CHECK_NEIGHBOURS";
   }
   const ResolvedScene resolved(settings, kWidth, kHeight);
   const View& view = resolved.scene.view;
@@ -327,25 +329,29 @@ TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
 // The options beyond the paper reach all three files (and the paper's files have none of them).
 TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
   test::TempDir dir;
-  const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --split-cap 2.5 --multi-surface neighbours");
+  const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") +
+                                " --split-cap 2.5 --multi-surface neighbours --split-check neighbours");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* file : {"out/rsaa_prepass.glsl", "out/rsaa_post.frag", "out/rsaa_post.hlsl"}) {
     const std::string text = test::read_text(dir.file(file));
     EXPECT_NE(text.find("#define RSAA_SPLIT_CAP 2.5\n"), std::string::npos) << file;
     EXPECT_NE(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS\n"), std::string::npos) << file;
-    EXPECT_NE(text.find("--split-cap 2.5 --multi-surface neighbours"), std::string::npos) << file;
+    EXPECT_NE(text.find("#define RSAA_SPLIT_CHECK_NEIGHBOURS\n"), std::string::npos) << file;
+    EXPECT_NE(text.find("--split-cap 2.5 --multi-surface neighbours --split-check neighbours"), std::string::npos)
+        << file;
   }
   EXPECT_EQ(glslang_errors("frag", test::read_text(dir.file("out/rsaa_post.frag"))), "");
   const auto hlsl = test::run_command("glslangValidator -D -V -S frag -e RsaaPostPS -o " + dir.file("p.spv") + " " +
                                       dir.file("out/rsaa_post.hlsl"));
   EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
   const auto paper =
-      test::run_rsaa("shaders --out-dir " + dir.file("paper") + " --similarity sadp --split-cap 0 --multi-surface fetch");
+      test::run_rsaa("shaders --out-dir " + dir.file("paper") + " --similarity sadp --split-cap 0 --multi-surface fetch --split-check off");
   ASSERT_EQ(paper.exit_code, 0) << paper.output;
   for (const char* file : {"paper/rsaa_prepass.glsl", "paper/rsaa_post.frag", "paper/rsaa_post.hlsl"}) {
     const std::string text = test::read_text(dir.file(file));
     EXPECT_EQ(text.find("#define RSAA_SPLIT_CAP"), std::string::npos) << file;
     EXPECT_EQ(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS"), std::string::npos) << file;
+    EXPECT_EQ(text.find("#define RSAA_SPLIT_CHECK_NEIGHBOURS"), std::string::npos) << file;
   }
 }
 

@@ -71,6 +71,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.prepass = o.prepass;
   s.split_cap = float(o.split_cap);
   s.multi_surface = o.multi_surface;
+  s.split_check = o.split_check;
   s.post = o.post;
   return s;
 }
@@ -98,14 +99,17 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --split-cap must be 0 (the paper's split) or a finite number >= 1");
   if (o.multi_surface != "fetch" && o.multi_surface != "neighbours")
     bad("rsaa --multi-surface must be fetch or neighbours, not '" + o.multi_surface + "'");
+  if (o.split_check != "off" && o.split_check != "neighbours")
+    bad("rsaa --split-check must be off or neighbours, not '" + o.split_check + "'");
   if (o.post != "edges" && o.post != "single") bad("rsaa --post must be edges or single, not '" + o.post + "'");
 }
 
-// " cap1.5 ms": the resolve's options beyond the paper, when used.
+// " cap1.5 ms sc": the resolve's options beyond the paper, when used.
 std::string rsaa_extension_label(const TechniqueOptions& o) {
   std::ostringstream label;
   if (o.split_cap > 0.0) label << " cap" << o.split_cap;
   if (o.multi_surface != "fetch") label << " ms";
+  if (o.split_check != "off") label << " sc";
   if (o.post != "edges") label << " " << o.post << "-pass";
   return label.str();
 }

@@ -134,6 +134,35 @@ std::vector<std::uint32_t> smooth_surface_ids(const Scene& scene) {
   return ids;
 }
 
+Rgb coverage_resolve(const DiagnosisInputs& in, int x, int y) {
+  const int w = in.noaa.width, h = in.noaa.height;
+  const std::size_t p = std::size_t(y) * w + x;
+  const PixelSurfaces& s = in.surfaces[p];
+  const Rgb own = in.noaa.at(x, y);
+  if (s.total <= 0 || s.count <= 1) return own;
+  // Edge neighbours first, then the diagonals.
+  static const int steps[8][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+  const auto colour_of = [&](std::uint32_t surface) {
+    if (surface == in.centre_surface[p]) return own;
+    for (const auto& d : steps) {
+      const int nx = x + d[0], ny = y + d[1];
+      if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+      if (in.centre_surface[std::size_t(ny) * w + nx] == surface) return in.noaa.at(nx, ny);
+    }
+    return own;
+  };
+  double r = 0.0, g = 0.0, b = 0.0;
+  int counted = 0;
+  for (int k = 0; k < std::min(s.count, PixelSurfaces::kMaxKept); ++k) {
+    const Rgb c = colour_of(s.ids[k]);
+    const double weight = double(s.samples[k]) / s.total;
+    r += weight * c.r, g += weight * c.g, b += weight * c.b;
+    counted += s.samples[k];
+  }
+  const double rest = double(std::max(0, s.total - counted)) / s.total;  // surfaces beyond the kept ones
+  return {float(r + rest * own.r), float(g + rest * own.g), float(b + rest * own.b)};
+}
+
 const char* to_string(DiagnosisClass c) {
   static const char* const names[kDiagnosisClassCount] = {
       "1 surface, left alone", "1 surface, resampled (false edge)", "2+ surfaces, unseen by the subsamples",
@@ -178,7 +207,8 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
   d.pixel_class.resize(n);
   d.rsaa_error.resize(n);
   d.oracle = Image(w, h);
-  std::vector<double> noaa_error(n), oracle_error(n), baseline_error(n);
+  d.coverage = Image(w, h);
+  std::vector<double> noaa_error(n), oracle_error(n), baseline_error(n), coverage_error(n);
   parallel_for(std::uint64_t(h), 8, 0, [&](std::uint64_t begin, std::uint64_t end) {
     for (int y = int(begin); y < int(end); ++y)
       for (int x = 0; x < w; ++x) {
@@ -188,6 +218,8 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
         d.rsaa_error[p] = float(quantised_error(in.rsaa.at(x, y), ref));
         noaa_error[p] = quantised_error(in.noaa.at(x, y), ref);
         oracle_error[p] = quantised_error(d.oracle.at(x, y), ref);
+        d.coverage.at(x, y) = coverage_resolve(in, x, y);
+        coverage_error[p] = quantised_error(d.coverage.at(x, y), ref);
         if (has_baseline) baseline_error[p] = quantised_error(in.baseline.at(x, y), ref);
         d.pixel_class[p] = classify(in, x, y, all_similar);
       }
@@ -195,7 +227,7 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
 
   d.rows.resize(kDiagnosisClassCount);
   for (int c = 0; c < kDiagnosisClassCount; ++c) d.rows[c].name = to_string(DiagnosisClass(c));
-  double rsaa_total = 0.0, noaa_total = 0.0, oracle_total = 0.0, baseline_total = 0.0;
+  double rsaa_total = 0.0, noaa_total = 0.0, oracle_total = 0.0, baseline_total = 0.0, coverage_total = 0.0;
   for (std::size_t p = 0; p < n; ++p) {
     DiagnosisRow& row = d.rows[int(d.pixel_class[p])];
     ++row.pixels;
@@ -203,12 +235,15 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
     row.noaa_error += noaa_error[p];
     row.oracle_error += oracle_error[p];
     row.baseline_error += baseline_error[p];
+    row.coverage_error += coverage_error[p];
     baseline_total += baseline_error[p];
+    coverage_total += coverage_error[p];
     rsaa_total += d.rsaa_error[p], noaa_total += noaa_error[p], oracle_total += oracle_error[p];
   }
   d.rsaa_psnr = psnr_of(rsaa_total, n);
   d.noaa_psnr = psnr_of(noaa_total, n);
   d.oracle_psnr = psnr_of(oracle_total, n);
+  d.coverage_psnr = psnr_of(coverage_total, n);
   d.has_baseline = has_baseline;
   d.baseline_psnr = psnr_of(baseline_total, n);
   return d;
@@ -220,16 +255,18 @@ std::string diagnosis_markdown(const Diagnosis& d, const std::string& title, con
   for (const DiagnosisRow& r : d.rows) rsaa_total += r.rsaa_error, noaa_total += r.noaa_error, pixels += r.pixels;
   std::ostringstream out;
   char line[512];
-  std::snprintf(line, sizeof line, "%s: RSAA %.2f dB, no AA %.2f dB, best single fetch (oracle) %.2f dB", title.c_str(),
-                d.rsaa_psnr, d.noaa_psnr, d.oracle_psnr);
+  std::snprintf(line, sizeof line,
+                "%s: RSAA %.2f dB, no AA %.2f dB, best single fetch (oracle) %.2f dB, exact coverage of the 1x "
+                "colours %.2f dB",
+                title.c_str(), d.rsaa_psnr, d.noaa_psnr, d.oracle_psnr, d.coverage_psnr);
   out << line;
   if (d.has_baseline) {
     std::snprintf(line, sizeof line, ", %s %.2f dB", baseline_name.c_str(), d.baseline_psnr);
     out << line;
   }
-  out << "\n\n| pixel class | pixels | share of RSAA error | share of no-AA error | RSAA error / no-AA | oracle / no-AA | ";
+  out << "\n\n| pixel class | pixels | share of RSAA error | share of no-AA error | RSAA error / no-AA | oracle / no-AA | exact coverage / no-AA | ";
   if (d.has_baseline) out << baseline_name << " / no-AA | ";
-  out << "PSNR if this class were perfect |\n| --- | --- | --- | --- | --- | --- | " << (d.has_baseline ? "--- | " : "")
+  out << "PSNR if this class were perfect |\n| --- | --- | --- | --- | --- | --- | --- | " << (d.has_baseline ? "--- | " : "")
       << "--- |\n";
   for (std::size_t c = 0; c < d.rows.size(); ++c) {
     const DiagnosisRow& r = d.rows[c];
@@ -237,10 +274,10 @@ std::string diagnosis_markdown(const Diagnosis& d, const std::string& title, con
     const double if_perfect = rest > 0.0 ? 10.0 * std::log10(255.0 * 255.0 * double(pixels) / rest)
                                          : std::numeric_limits<double>::infinity();
     const auto ratio = [&](double a) { return r.noaa_error > 0.0 ? a / r.noaa_error : 0.0; };
-    std::snprintf(line, sizeof line, "| %s | %zu | %.1f%% | %.1f%% | %.2f | %.2f | ", r.name.c_str(), r.pixels,
+    std::snprintf(line, sizeof line, "| %s | %zu | %.1f%% | %.1f%% | %.2f | %.2f | %.2f | ", r.name.c_str(), r.pixels,
                   rsaa_total > 0.0 ? 100.0 * r.rsaa_error / rsaa_total : 0.0,
                   noaa_total > 0.0 ? 100.0 * r.noaa_error / noaa_total : 0.0, ratio(r.rsaa_error),
-                  ratio(r.oracle_error));
+                  ratio(r.oracle_error), ratio(r.coverage_error));
     out << line;
     if (d.has_baseline) {
       std::snprintf(line, sizeof line, "%.2f | ", ratio(r.baseline_error));

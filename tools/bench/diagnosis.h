@@ -22,6 +22,8 @@ struct PixelSurfaces {
   static constexpr int kMaxKept = 4;
   std::array<std::uint32_t, kMaxKept> ids{};
   int count = 0;  // distinct surfaces seen, may exceed kMaxKept
+  std::array<int, kMaxKept> samples{};  // samples that saw ids[k]
+  int total = 0;                        // samples taken (0: unknown, no coverage bound)
 };
 
 struct DiagnosisInputs {
@@ -55,6 +57,7 @@ struct DiagnosisRow {
   double rsaa_error = 0.0;    // summed squared error, 8-bit sRGB units, mean of RGB
   double noaa_error = 0.0;
   double oracle_error = 0.0;  // best single bilinear fetch within [-1, 1]^2
+  double coverage_error = 0.0;  // exact coverage blend of the 1x colours (coverage_resolve)
   double baseline_error = 0.0;
 };
 
@@ -63,10 +66,18 @@ struct Diagnosis {
   std::vector<DiagnosisRow> rows;              // one per DiagnosisClass
   std::vector<DiagnosisClass> pixel_class;     // per pixel
   std::vector<float> rsaa_error;               // per pixel squared error
-  double rsaa_psnr = 0.0, noaa_psnr = 0.0, oracle_psnr = 0.0, baseline_psnr = 0.0;
+  double rsaa_psnr = 0.0, noaa_psnr = 0.0, oracle_psnr = 0.0, baseline_psnr = 0.0, coverage_psnr = 0.0;
   bool has_baseline = false;
   Image oracle;                                // the oracle image
+  Image coverage;                              // the exact-coverage image (coverage_resolve)
 };
+
+// The exact-coverage bound of resampling the 1x image: each surface the supersampled pass saw in
+// the pixel weighted by its share of the samples, coloured as the 1x image shows it (the pixel's
+// own colour for its centre's surface, else the nearest neighbour centre showing it: edge
+// neighbours first; the own colour when none does). What no error in the mask or the offset
+// limits: the rest is shading and texture seen once per pixel, which more subsamples cannot fix.
+Rgb coverage_resolve(const DiagnosisInputs& in, int x, int y);
 
 // A surface id per triangle (1-based): triangles of one draw range that share an edge (welded by
 // position) and whose face normals differ by less than 30 degrees belong to one surface, so a

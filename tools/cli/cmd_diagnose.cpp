@@ -61,7 +61,9 @@ std::vector<PixelSurfaces> surfaces_seen(const GpuScene& scene, const View& view
     for (const auto& [id, n] : counts[p]) by_count.push_back({-n, id});
     std::sort(by_count.begin(), by_count.end());
     out[p].count = int(by_count.size());
-    for (int k = 0; k < std::min<int>(out[p].count, PixelSurfaces::kMaxKept); ++k) out[p].ids[k] = by_count[k].second;
+    for (const auto& [id, n] : counts[p]) out[p].total += n;
+    for (int k = 0; k < std::min<int>(out[p].count, PixelSurfaces::kMaxKept); ++k)
+      out[p].ids[k] = by_count[k].second, out[p].samples[k] = -by_count[k].first;
   }
   return out;
 }
@@ -142,11 +144,12 @@ int run_diagnose(const DiagnoseArgs& a) {
   const std::filesystem::path dir(a.out_dir);
   write_image((dir / "error_map.png").string(), from_display(diagnosis_picture(d), a.width, a.height));
   write_image((dir / "oracle.png").string(), d.oracle);
+  write_image((dir / "coverage.png").string(), d.coverage);
   write_image((dir / "rsaa.png").string(), in.rsaa);
   write_image((dir / "noaa.png").string(), in.noaa);
   write_image((dir / "reference.png").string(), in.reference);
   write_file_atomically((dir / "diagnosis.md").string(), markdown + legend + "\n");
-  std::printf("%s%s\nwrote %s/{diagnosis.md,error_map.png,oracle.png,rsaa.png,noaa.png,reference.png}\n",
+  std::printf("%s%s\nwrote %s/{diagnosis.md,error_map.png,oracle.png,coverage.png,rsaa.png,noaa.png,reference.png}\n",
               markdown.c_str(), legend.c_str(), a.out_dir.c_str());
   return 0;
 }

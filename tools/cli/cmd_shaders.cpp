@@ -35,6 +35,7 @@ std::string command_line(const ShadersArgs& a) {
          " --similarity " + s.similarity + " --auth " + std::to_string(s.auth) + " --code-bits " +
          std::to_string(s.code_bits) + (s.split_cap > 0.0f ? " --split-cap " + cap_text(s.split_cap) : "") +
          (s.multi_surface == "fetch" ? "" : " --multi-surface " + s.multi_surface) +
+         (s.split_check == "off" ? "" : " --split-check " + s.split_check) +
          (s.depth == "gl" ? "" : " --depth " + s.depth) + " --prepass " + s.prepass +
          " --first-unit " +
          std::to_string(s.prepass_first_unit) + " --uniform-binding " + std::to_string(s.uniform_binding);
@@ -69,7 +70,8 @@ int run_shaders(ShadersArgs a) {
     if (a.settings.similarity == "depth") hlsl_defines += "#define RSAA_SIMILARITY_DEPTH\n";
     if (a.settings.similarity == "sadp-plane") hlsl_defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
     // The options beyond the paper, as rsaa_shader_defines() writes them.
-    for (const char* name : {"#define RSAA_SPLIT_CAP ", "#define RSAA_MULTI_SURFACE_NEIGHBOURS"}) {
+    for (const char* name :
+         {"#define RSAA_SPLIT_CAP ", "#define RSAA_MULTI_SURFACE_NEIGHBOURS", "#define RSAA_SPLIT_CHECK_NEIGHBOURS"}) {
       const std::size_t at = defines.find(name);
       if (at != std::string::npos) hlsl_defines += defines.substr(at, defines.find('\n', at) + 1 - at);
     }
@@ -115,6 +117,9 @@ Action add_shaders_command(CLI::App& app) {
   cmd->add_option("--multi-surface", s.multi_surface, "Ours: fetch (the paper) | neighbours (3+ surface pixels)")
       ->capture_default_str()
       ->check(CLI::IsMember({"fetch", "neighbours"}));
+  cmd->add_option("--split-check", s.split_check, "Ours: neighbours (subsamples above the threshold) | off (the paper's)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "neighbours"}));
   cmd->add_option("--depth", s.depth,
                   "The engine's depth convention: gl (glClipControl GL_NEGATIVE_ONE_TO_ONE, OpenGL's default) | "
                   "zero-to-one (GL_ZERO_TO_ONE) | reverse-z (GL_ZERO_TO_ONE, nearer is greater)")

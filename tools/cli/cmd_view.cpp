@@ -90,7 +90,7 @@ class Viewer {
       case GLFW_KEY_ESCAPE: return false;
       default: return true;
     }
-    if (o.technique != "rsaa") o.similarity = TechniqueOptions().similarity, o.auth = 0;
+    if (o.technique != "rsaa") o.similarity = TechniqueOptions().similarity, o.auth = TechniqueOptions().auth;
     options_ = o;
     rebuild();
     return true;

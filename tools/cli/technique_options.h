@@ -46,6 +46,11 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "rsaa (ours): fetch (one bilinear fetch, the paper) | neighbours (pixels whose dissimilar "
                   "subsamples point at two different surfaces: mean over subsamples of the outside pixels' colours)")
       ->capture_default_str();
+  cmd->add_option("--split-check", o.split_check,
+                  "rsaa (ours): neighbours (a subsample above the threshold that the split calls similar is "
+                  "dissimilar when the outside pixel in its direction shows a surface about as different) | "
+                  "off (the paper's split decides)")
+      ->capture_default_str();
   cmd->add_option("--post", o.post,
                   "rsaa post-process: edges (an edge pass marks the pixels to resolve, the resolve runs only "
                   "there) | single (one pass over every pixel); the same image")
