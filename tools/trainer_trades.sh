@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The trainer's trades: table accuracy and training time against the number of training cases;
-# image PSNR of RSAA 8x SADP against the similarity threshold and the bits per stored similarity
+# image PSNR of RSAA 8x (the defaults) against the similarity threshold and the bits per stored similarity
 # code. Prints Markdown tables, writes CSVs and PNG charts (rsaa plot) into OUT_DIR.
 # Usage: tools/trainer_trades.sh [SCENE] [OUT_DIR]   (default builtin:default out/trainer-trades)
 set -euo pipefail
@@ -33,7 +33,7 @@ $rsaa render --scene "$scene" --technique ssaa --samples 64 --out "$ref" >/dev/n
 psnr() { $rsaa compare "$1" "$ref" | awk 'NR == 2 {print $2}'; }
 
 echo
-echo "### RSAA 8x SADP (auth 0) on $scene against the similarity threshold"
+echo "### RSAA 8x (the defaults) on $scene against the similarity threshold"
 echo
 echo "| threshold | PSNR dB |"
 echo "| --- | --- |"
@@ -46,7 +46,7 @@ for threshold in 0.05 0.1 0.2 0.4 0.8 1.6; do
 done
 
 echo
-echo "### RSAA 8x SADP (auth 0) on $scene against the bits per stored similarity"
+echo "### RSAA 8x (the defaults) on $scene against the bits per stored similarity"
 echo
 echo "| code bits | bytes/px of codes | PSNR dB |"
 echo "| --- | --- | --- |"
@@ -63,6 +63,6 @@ $rsaa plot "$out/cases.csv" --x cases --y rms_one_line,rms_two_line,rms_mix --lo
 $rsaa plot "$out/cases.csv" --x cases --y train_seconds --log-x \
   --title "training time (s) against training cases, 2 cores" --out "$out/train_time.png" >&2
 $rsaa plot "$out/threshold.csv" --x threshold --y psnr_db --log-x \
-  --title "RSAA 8x SADP PSNR (dB) against the similarity threshold, $scene" --out "$out/threshold.png" >&2
+  --title "RSAA 8x (defaults) PSNR (dB) against the similarity threshold, $scene" --out "$out/threshold.png" >&2
 $rsaa plot "$out/bits.csv" --x code_bits --y psnr_db \
-  --title "RSAA 8x SADP PSNR (dB) against bits per similarity code, $scene" --out "$out/bits.png" >&2
+  --title "RSAA 8x (defaults) PSNR (dB) against bits per similarity code, $scene" --out "$out/bits.png" >&2
