@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 #include <opencv2/imgproc.hpp>
 
@@ -30,11 +31,27 @@ cv::Scalar family_colour(const TechniqueOptions& o) {
 }
 cv::Scalar family_colour(const TechniqueResult& r) { return family_colour(r.options); }
 
-// "R8 sadp 1" for rsaa 8x sadp auth1, the label itself otherwise.
+// "R8 sadp a1" for rsaa 8x sadp auth1, the label itself otherwise. Every option the label names
+// stays (cap1.5 ms sc, msaa, 1-pass, a table's name), so that two rows never share a legend entry.
 std::string short_label(const std::string& label, const TechniqueOptions& o) {
   if (o.technique != "rsaa") return label;
-  const int samples = o.samples ? o.samples : 8;
-  return "R" + std::to_string(samples) + " " + o.similarity + " a" + std::to_string(o.auth);
+  std::istringstream words(label);
+  std::string word, out;
+  while (words >> word) {
+    if (word == "rsaa") {
+      out = "R";
+      continue;
+    }
+    if (out == "R" && word.size() == 2 && word[1] == 'x') {  // "rsaa 8x" -> "R8"
+      out += word[0];
+      continue;
+    }
+    if (word == "gl4x") continue;  // RSAA 4x's default pattern
+    if (word.rfind("auth", 0) == 0) word = "a" + word.substr(4);
+    if (word == "single-pass") word = "1-pass";
+    out += " " + word;
+  }
+  return out;
 }
 std::string short_label(const TechniqueResult& r) { return short_label(r.label, r.options); }
 
@@ -42,6 +59,17 @@ std::string short_label(const TechniqueResult& r) { return short_label(r.label, 
 void text(cv::Mat& canvas, const std::string& s, cv::Point at, double scale = 0.45,
           cv::Scalar colour = kInk) {
   cv::putText(canvas, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, colour, 1, cv::LINE_AA);
+}
+
+// Width in pixels of `s` drawn by text() at `scale`, plus a margin: legend columns are as wide
+// as their longest label (RSAA labels name every option they set).
+int label_column(const std::vector<std::string>& labels, double scale, int at_least) {
+  int widest = at_least;
+  for (const std::string& s : labels) {
+    int baseline = 0;
+    widest = std::max(widest, cv::getTextSize(s, cv::FONT_HERSHEY_SIMPLEX, scale, 1, &baseline).width + 12);
+  }
+  return widest;
 }
 
 std::vector<const TechniqueResult*> of_scene(const std::vector<TechniqueResult>& results, const std::string& scene) {
@@ -56,7 +84,10 @@ std::vector<const TechniqueResult*> of_scene(const std::vector<TechniqueResult>&
 void plot_pareto(const std::vector<TechniqueResult>& results, const std::string& scene, const std::string& path) {
   const auto rows = of_scene(results, scene);
   if (rows.empty()) return;
-  const int width = 1060, height = 600, left = 70, right = 330, top = 50, bottom = 60;
+  std::vector<std::string> labels;
+  for (const auto* r : rows) labels.push_back("* " + short_label(*r));
+  const int label_width = label_column(labels, 0.4, 150);
+  const int right = label_width + 180, width = 730 + right, height = 600, left = 70, top = 50, bottom = 60;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   double x_lo = 1e9, x_hi = 0, y_lo = 1e9, y_hi = 0;
   for (const auto* r : rows) {
@@ -102,7 +133,7 @@ void plot_pareto(const std::vector<TechniqueResult>& results, const std::string&
     std::snprintf(line, sizeof line, "%s %s", r->pareto ? "*" : " ", short_label(*r).c_str());
     text(canvas, line, {width - right + 10, legend_y}, 0.4, family_colour(*r));
     std::snprintf(line, sizeof line, "%6.2f dB  %6.2fx", r->psnr_db, r->frame_ratio);
-    text(canvas, line, {width - right + 160, legend_y}, 0.4, family_colour(*r));
+    text(canvas, line, {width - right + 10 + label_width, legend_y}, 0.4, family_colour(*r));
     legend_y += 17;
   }
   text(canvas, "* = on the Pareto front", {width - right + 10, legend_y + 10}, 0.4);
@@ -114,7 +145,11 @@ void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::strin
   for (const GrowthPoint& p : results.points)
     if (p.axis == axis && p.frame_ms > 0) points.push_back(&p);
   if (points.empty()) return;
-  const int width = 1060, height = 600, left = 70, right = 330, top = 50, bottom = 60;
+  std::vector<std::string> labels;
+  for (const GrowthSlope& slope : growth_slopes(results))
+    if (slope.axis == axis) labels.push_back(short_label(slope.label, slope.options));
+  const int label_width = label_column(labels, 0.4, 160);
+  const int right = label_width + 170, width = 730 + right, height = 600, left = 70, top = 50, bottom = 60;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   double x_lo = 1e300, x_hi = 0, y_lo = 1e300, y_hi = 0;
   for (const auto* p : points) {
@@ -177,7 +212,7 @@ void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::strin
     text(canvas, short_label(s.label, s.options), {width - right + 10, legend_y}, 0.4, colour);
     char line[96];
     std::snprintf(line, sizeof line, "exponent %.2f", s.exponent);
-    text(canvas, line, {width - right + 170, legend_y}, 0.4, colour);
+    text(canvas, line, {width - right + 10 + label_width, legend_y}, 0.4, colour);
     legend_y += 17;
   }
   write_canvas(canvas, path);
@@ -191,7 +226,9 @@ void plot_pass_times(const std::vector<TechniqueResult>& results, const std::str
                                                      {"post-process", {60, 170, 60}},
                                                      {"aggregates", {170, 80, 150}},
                                                      {"resolve", {160, 160, 160}}};
-  const int width = 960, row_h = 24, left = 190, right = 70, top = 40;
+  std::vector<std::string> labels;
+  for (const auto* r : rows) labels.push_back(short_label(*r));
+  const int left = label_column(labels, 0.42, 180) + 10, width = 770 + left, row_h = 24, right = 70, top = 40;
   const int height = top + int(rows.size()) * row_h + 70;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   double longest = 0;
