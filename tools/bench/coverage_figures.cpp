@@ -171,22 +171,16 @@ Figure dcaa_figure(const FigureOptions& o, const FigureProgress& progress) {
   std::ostringstream md;
   md << "Surfaces DCAA keeps per pixel (surface rules with 8 slots, no z-prepass; 0 = no fragment, the "
         "background), stored in the slots and visible after the depth resolve, % of pixels, "
-     << o.width << "x" << o.height << ":\n\n| surfaces |";
-  for (std::size_t c = 1; c < histogram.table.columns.size(); ++c) md << " " << histogram.table.columns[c] << " |";
-  md << "\n| --- |";
-  for (std::size_t c = 1; c < histogram.table.columns.size(); ++c) md << " --- |";
-  md << "\n";
+     << o.width << "x" << o.height << ":\n\n";
+  markdown_table_head(md, "surfaces", {histogram.table.columns.begin() + 1, histogram.table.columns.end()});
   for (std::size_t r = 0; r < histogram.table.rows.size(); ++r) {
     md << "| " << histogram.table.row_labels[r] << " |";
     for (std::size_t c = 1; c < histogram.table.columns.size(); ++c) md << " " << fixed(histogram.table.rows[r][c], 3) << " |";
     md << "\n";
   }
   md << "\nPSNR (dB) against 64x SSAA by the number of surfaces a pixel may keep (the CPU reference replaying the "
-        "GL fragment lists):\n\n| slots |";
-  for (std::size_t c = 1; c < quality.table.columns.size(); ++c) md << " " << quality.table.columns[c] << " |";
-  md << "\n| --- |";
-  for (std::size_t c = 1; c < quality.table.columns.size(); ++c) md << " --- |";
-  md << "\n";
+        "GL fragment lists):\n\n";
+  markdown_table_head(md, "slots", {quality.table.columns.begin() + 1, quality.table.columns.end()});
   for (const auto& row : quality.table.rows) {
     md << "| " << int(row[0]) << " |";
     for (std::size_t c = 1; c < row.size(); ++c) md << " " << fixed(row[c]) << " |";
@@ -237,11 +231,8 @@ Figure agaa_figure(const FigureOptions& o, const FigureProgress& progress) {
   std::ostringstream md;
   md << "PSNR (dB) against 64x SSAA by the number of aggregates c, with 4 (hardware MSAA), 8 and 16 "
         "(jittered) visibility samples, "
-     << o.width << "x" << o.height << ":\n\n| c |";
-  for (std::size_t c = 1; c < part.table.columns.size(); ++c) md << " " << part.table.columns[c] << " |";
-  md << "\n| --- |";
-  for (std::size_t c = 1; c < part.table.columns.size(); ++c) md << " --- |";
-  md << "\n";
+     << o.width << "x" << o.height << ":\n\n";
+  markdown_table_head(md, "c", {part.table.columns.begin() + 1, part.table.columns.end()});
   for (const auto& row : part.table.rows) {
     md << "| " << int(row[0]) << " |";
     for (std::size_t c = 1; c < row.size(); ++c) md << " " << fixed(row[c]) << " |";

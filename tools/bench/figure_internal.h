@@ -3,7 +3,9 @@
 #pragma once
 
 #include <memory>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include "image/image_io.h"
 #include "runtime/gl_objects.h"
@@ -34,6 +36,8 @@ struct SceneFrame {
 double capped_psnr(const DisplayImage& a, const DisplayImage& reference);
 // `v` with `decimals` decimals.
 std::string fixed(double v, int decimals = 2);
+// A Markdown table's header and separator rows: `first`, then `columns`.
+void markdown_table_head(std::ostream& md, const std::string& first, const std::vector<std::string>& columns);
 
 // Loads `spec` and renders its reference. Needs a current GL context.
 std::unique_ptr<SceneFrame> load_scene_frame(const std::string& spec, const FigureOptions& options, const FigureProgress& progress);

@@ -154,11 +154,10 @@ Figure figure1(const FigureOptions& o, const FigureProgress& progress) {
     }
     part.style = {"Fig. 1: pixels with luminance error above a threshold, " + scene_short_name(spec),
                   "threshold (1/255 of the display range)", "% of pixels", true, {"msaa", "noaa"}};
-    md << "**" << scene_short_name(spec) << "**\n\n| technique |";
-    for (double t : thresholds) md << " > " << fixed(t * 255.0, t * 255.0 < 1 ? 1 : 0) << " |";
-    md << "\n| --- |";
-    for (std::size_t k = 0; k < thresholds.size(); ++k) md << " --- |";
-    md << "\n";
+    md << "**" << scene_short_name(spec) << "**\n\n";
+    std::vector<std::string> threshold_columns;
+    for (double t : thresholds) threshold_columns.push_back("> " + fixed(t * 255.0, t * 255.0 < 1 ? 1 : 0));
+    markdown_table_head(md, "technique", threshold_columns);
     for (std::size_t c = 1; c < part.table.columns.size(); ++c) {
       md << "| " << part.table.columns[c] << " |";
       for (const auto& row : part.table.rows) md << " " << fixed(row[c]) << " |";
@@ -292,6 +291,14 @@ void write_figure(const Figure& f, const std::string& dir) {
 double capped_psnr(const DisplayImage& a, const DisplayImage& reference) {
   const double db = compare_images(a, reference).psnr_db;
   return std::isfinite(db) ? std::min(db, 99.0) : 99.0;
+}
+
+void markdown_table_head(std::ostream& md, const std::string& first, const std::vector<std::string>& columns) {
+  md << "| " << first << " |";
+  for (const std::string& c : columns) md << " " << c << " |";
+  md << "\n| --- |";
+  for (std::size_t c = 0; c < columns.size(); ++c) md << " --- |";
+  md << "\n";
 }
 
 std::string fixed(double v, int decimals) {
