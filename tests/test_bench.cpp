@@ -153,6 +153,31 @@ TEST(BenchGrowth, SlopesOfKnownPoints) {
   EXPECT_NEAR(slopes[1].ms_per_unit, 0.5 * 100, 1e-9);  // per 100k triangles
 }
 
+TEST(BenchGrowth, LightCrossingIsWhereTheCheaperLineStartsBelow) {
+  // a = 10 + N ms, b = 3N ms: a is cheaper from N = 5 on (fitted), first measured at N = 8.
+  const std::string rsaa8 = technique_label(technique_options("rsaa", 8));
+  bench::GrowthResults r;
+  for (int n : {1, 2, 4, 8, 16}) {
+    bench::GrowthPoint p;
+    p.axis = bench::GrowthAxis::Lights;
+    p.lights = n;
+    p.label = rsaa8, p.frame_ms = 10.0 + n;
+    r.points.push_back(p);
+    p.label = "msaa 4x", p.frame_ms = 3.0 * n;
+    r.points.push_back(p);
+  }
+  const bench::LightCrossing x = bench::light_crossing(r, rsaa8, "msaa 4x");
+  EXPECT_EQ(x.measured, 8);
+  EXPECT_NEAR(x.fitted, 5.0, 1e-9);
+  const bench::LightCrossing never = bench::light_crossing(r, "msaa 4x", rsaa8);
+  EXPECT_EQ(never.measured, 1);  // msaa is cheaper at N = 1 ...
+  EXPECT_EQ(never.fitted, 0.0);  // ... but its line grows faster: not for large N
+  // Only the pairs whose both techniques were measured are reported (no ssaa 8x, no RSAA 4x here).
+  const auto crossings = bench::light_crossings(r);
+  ASSERT_EQ(crossings.size(), 1u);
+  EXPECT_EQ(crossings[0].b, "msaa 4x");
+}
+
 TEST(BenchGrowth, TinyRunWritesEveryPoint) {
   gl::HeadlessContext context;
   bench::GrowthOptions o;

@@ -201,6 +201,20 @@ LightCrossing light_crossing(const GrowthResults& results, const std::string& a,
   return out;
 }
 
+std::vector<LightCrossing> light_crossings(const GrowthResults& results) {
+  const std::string rsaa8 = technique_label(technique_options("rsaa", 8));
+  const std::string rsaa4 = technique_label(technique_options("rsaa", 4));
+  const auto measured = [&](const std::string& label) {
+    return std::any_of(results.points.begin(), results.points.end(),
+                       [&](const GrowthPoint& p) { return p.axis == GrowthAxis::Lights && p.label == label; });
+  };
+  std::vector<LightCrossing> out;
+  for (const auto& [a, b] : std::vector<std::pair<std::string, std::string>>{
+           {rsaa8, "msaa 4x"}, {rsaa8, "ssaa 8x"}, {rsaa4, "msaa 4x"}})
+    if (measured(a) && measured(b)) out.push_back(light_crossing(results, a, b));
+  return out;
+}
+
 std::string growth_json(const GrowthOptions& o, const GrowthResults& results) {
   nlohmann::json out = {{"format", "rsaa-bench-growth"},
                         {"version", 1},
@@ -229,9 +243,8 @@ std::string growth_json(const GrowthOptions& o, const GrowthResults& results) {
                                                                 : "ms_per_light",
                               s.ms_per_unit},
                              {"intercept_ms", s.intercept_ms}});
-  for (const char* b : {"msaa 4x", "ssaa 8x"}) {
+  for (const LightCrossing& x : light_crossings(results)) {
     if (o.light_counts.empty()) break;
-    const LightCrossing x = light_crossing(results, technique_label(technique_options("rsaa", 8)), b);
     out["light_crossings"].push_back({{"cheaper", x.a}, {"than", x.b}, {"first_measured_lights", x.measured},
                                       {"fitted_lights", x.fitted}});
   }
@@ -293,8 +306,7 @@ std::string growth_markdown(const GrowthOptions& o, const GrowthResults& results
     }
     if (axis == GrowthAxis::Lights) {
       s << '\n';
-      for (const char* b : {"msaa 4x", "ssaa 8x"}) {
-        const LightCrossing x = light_crossing(results, technique_label(technique_options("rsaa", 8)), b);
+      for (const LightCrossing& x : light_crossings(results)) {
         s << "- " << x.a << " cheaper than " << x.b << ": "
           << (x.measured ? "from N = " + std::to_string(x.measured) + " measured" : std::string("at no measured N"));
         if (x.fitted > 0) {

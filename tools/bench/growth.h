@@ -74,6 +74,9 @@ struct GrowthResults {
 };
 
 LightCrossing light_crossing(const GrowthResults& results, const std::string& a, const std::string& b);
+// The crossings the report states: RSAA 8x (default options) against MSAA 4x and SSAA 8x, and
+// RSAA 4x against MSAA 4x.
+std::vector<LightCrossing> light_crossings(const GrowthResults& results);
 
 // Needs a current GL context.
 GrowthResults run_growth(const GrowthOptions& options, const Progress& progress);

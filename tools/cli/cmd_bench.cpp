@@ -53,10 +53,28 @@ std::vector<int> light_counts(const std::string& list) {
   return out;
 }
 
+// The techniques of `all` whose labels `list` names (comma-separated), in `all`'s order; noaa stays
+// first as the ratio baseline. A label that is not in `all` is refused, naming the valid ones.
+std::vector<TechniqueOptions> keep_techniques(const std::vector<TechniqueOptions>& all, const std::string& list) {
+  const std::vector<std::string> keep = split(list);
+  std::vector<TechniqueOptions> chosen;
+  for (const TechniqueOptions& t : all)
+    if (t.technique == "noaa" || std::find(keep.begin(), keep.end(), technique_label(t)) != keep.end())
+      chosen.push_back(t);
+  for (const std::string& k : keep)
+    if (std::none_of(chosen.begin(), chosen.end(), [&](const TechniqueOptions& t) { return technique_label(t) == k; })) {
+      std::string labels;
+      for (const TechniqueOptions& t : all) labels += (labels.empty() ? "'" : ", '") + technique_label(t) + "'";
+      throw std::invalid_argument("--techniques: no technique labelled '" + k + "' in the bench; its labels: " + labels);
+    }
+  return chosen;
+}
+
 // rsaa bench --growth: frame time against image size and triangle count, plots and slopes.
 int run_growth_command(const BenchArgs& a) {
   bench::GrowthOptions o;
   o.techniques = bench::default_techniques();
+  if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
   if (a.quick) {
     o.sizes = {{160, 120}, {320, 240}};
     o.subdivision_levels = {0, 1};
@@ -102,22 +120,7 @@ int run_bench_command(BenchArgs a) {
     o.scenes = bench::default_scenes();
   }
   if (!a.scenes.empty()) o.scenes = split(a.scenes);
-  if (!a.techniques.empty()) {
-    // Keep the listed labels of the default list; noaa stays first as the ratio baseline.
-    const std::vector<std::string> keep = split(a.techniques);
-    std::vector<TechniqueOptions> chosen;
-    for (const TechniqueOptions& t : o.techniques) {
-      const std::string label = technique_label(t);
-      if (t.technique == "noaa" || std::find(keep.begin(), keep.end(), label) != keep.end()) chosen.push_back(t);
-    }
-    for (const std::string& k : keep)
-      if (std::none_of(chosen.begin(), chosen.end(), [&](const TechniqueOptions& t) { return technique_label(t) == k; })) {
-        std::string labels;
-        for (const TechniqueOptions& t : o.techniques) labels += (labels.empty() ? "'" : ", '") + technique_label(t) + "'";
-        throw std::invalid_argument("--techniques: no technique labelled '" + k + "' in the bench; its labels: " + labels);
-      }
-    o.techniques = chosen;
-  }
+  if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
   if (!a.table.empty()) {  // RSAA with the user's table, beside the built-in ones
     if (a.table_prepass != "jittered" && a.table_prepass != "msaa" && a.table_prepass != "both")
       throw std::invalid_argument("--table-prepass must be jittered, msaa or both, not '" + a.table_prepass + "'");
