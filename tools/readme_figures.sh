@@ -72,7 +72,8 @@ if [[ $quick == 1 ]]; then
 fi
 
 step "training time" train-speed.md
-{ bash tools/bench_train.sh; bash tools/bench_train.sh d3d16x 1000000 1; bash tools/bench_train.sh d3d8x 10000000 1; } \
+{ bash tools/bench_train.sh; bash tools/bench_train.sh d3d16x 1000000 1; bash tools/bench_train.sh d3d8x 10000000 1
+  bash tools/bench_train.sh d3d16x 100000000 1; } \
   >"$out/train-speed.md"
 step "fit trade" fit-trade.md
 bash tools/fit_trade.sh >"$out/fit-trade.md"
