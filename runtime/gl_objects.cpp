@@ -59,7 +59,11 @@ Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment d
     attach(GLenum(GL_COLOR_ATTACHMENT0 + i), colour[i]);
     buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
   }
-  if (depth.texture) attach(GL_DEPTH_ATTACHMENT, depth);
+  if (depth.texture) {
+    GLint stencil_bits = 0;  // a depth-stencil texture attaches both
+    glGetTextureLevelParameteriv(depth.texture, 0, GL_TEXTURE_STENCIL_SIZE, &stencil_bits);
+    attach(stencil_bits > 0 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth);
+  }
   glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
   const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -151,6 +155,14 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
   glGetDoublev(GL_DEPTH_RANGE, depth_range_);
   polygon_offset_fill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
+  stencil_test_ = glIsEnabled(GL_STENCIL_TEST);
+  const GLenum stencil_queries[2][7] = {
+      {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
+       GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_WRITEMASK},
+      {GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF, GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL,
+       GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS, GL_STENCIL_BACK_WRITEMASK}};
+  for (int face = 0; face < 2; ++face)
+    for (int i = 0; i < 7; ++i) glGetIntegerv(stencil_queries[face][i], &stencil_[face][i]);
   scissor_ = glIsEnabled(GL_SCISSOR_TEST);
   sample_shading_ = glIsEnabled(GL_SAMPLE_SHADING);
   cull_face_ = glIsEnabled(GL_CULL_FACE);
@@ -219,6 +231,14 @@ SavedState::~SavedState() {
   glDepthRange(depth_range_[0], depth_range_[1]);
   polygon_offset_fill_ ? glEnable(GL_POLYGON_OFFSET_FILL) : glDisable(GL_POLYGON_OFFSET_FILL);
   depth_test_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
+  for (int face = 0; face < 2; ++face) {
+    const GLenum side = face == 0 ? GL_FRONT : GL_BACK;
+    const GLint* f = stencil_[face];
+    glStencilFuncSeparate(side, GLenum(f[0]), f[1], GLuint(f[2]));
+    glStencilOpSeparate(side, GLenum(f[3]), GLenum(f[4]), GLenum(f[5]));
+    glStencilMaskSeparate(side, GLuint(f[6]));
+  }
+  stencil_test_ ? glEnable(GL_STENCIL_TEST) : glDisable(GL_STENCIL_TEST);
   glUseProgram(GLuint(program_));
   glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read_framebuffer_));
@@ -236,6 +256,8 @@ void set_pass_state(bool depth_test) {
   glDepthFunc(GL_LESS);
   glDepthRange(0.0, 1.0);
   glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_STENCIL_TEST);
+  glStencilMask(0xFFFFFFFFu);
   depth_test ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
 }
 

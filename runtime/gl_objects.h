@@ -122,6 +122,11 @@ class SavedState {
   GLboolean polygon_offset_fill_ = GL_FALSE;
   GLfloat min_sample_shading_ = 0.0f;
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;
+  // Stencil test and, per face (front, back): function, reference (as GL reports it: clamped
+  // to the stencil bits of the framebuffer bound when saved), value mask, the three operations
+  // and the write mask.
+  GLboolean stencil_test_ = GL_FALSE;
+  GLint stencil_[2][7] = {};
   std::vector<UnitTextures> textures_;
   std::vector<DrawBufferState> draw_buffers_;  // blending and colour mask of every draw buffer
   std::vector<UniformBuffer> uniform_buffers_;
@@ -129,7 +134,7 @@ class SavedState {
 
 // The state a pass draws with, whatever the engine left: clears and writes reach every pixel
 // (no scissor, all masks on, no culling, filled polygons, no rasterizer discard, no polygon
-// offset), no blending, depth range [0, 1], depth test on (GL_LESS) or off.
+// offset), no blending, no stencil test, depth range [0, 1], depth test on (GL_LESS) or off.
 void set_pass_state(bool depth_test);
 
 // Throws std::invalid_argument naming `what` unless `texture` is an existing 2D texture of

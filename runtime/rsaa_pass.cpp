@@ -38,6 +38,10 @@ struct RsaaPass::Objects {
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
   gl::Program subsample_program, post_program;
+  // The culled jittered pre-pass: the marking program and its target (every code texture and
+  // the subsample depth-stencil).
+  gl::Program cull_program;
+  gl::Framebuffer cull_target;
   gl::CachedFramebuffer resolve_target;
   // The two-pass post-process (RsaaSettings::post "edges"): depth 0 marks the pixels to resolve.
   gl::Program edge_program;
@@ -353,6 +357,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     throw std::invalid_argument("RSAA post '" + settings.post + "' is not one of edges, single");
   if (settings.prepass != "jittered" && settings.prepass != "msaa")
     throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
+  if (settings.prepass_cull != "off" && settings.prepass_cull != "neighbours")
+    throw std::invalid_argument("RSAA prepass_cull '" + settings.prepass_cull + "' is not one of off, neighbours");
+  cull_ = settings.prepass_cull == "neighbours";
+  if (cull_ && settings.prepass != "jittered")
+    throw std::invalid_argument("RSAA prepass_cull neighbours needs the jittered pre-pass, not '" + settings.prepass + "'");
   multisample_ = settings.prepass == "msaa" && driver_samples_pattern(pattern_);
   std::vector<glm::ivec2> union_raster;
   if (settings.prepass == "msaa" && !multisample_) {
@@ -373,12 +382,15 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
       gl_->multisample_target2 = gl::make_framebuffer({{gl_->codes_ms2.get()}}, {gl_->depth_ms.get()});
     }
   } else {
-    gl_->subsample_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
+    gl_->subsample_depth = gl::make_texture_2d(cull_ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F, width, height);
+    const gl::Attachment depth{gl_->subsample_depth.get()};
+    std::vector<gl::Attachment> all_codes;
     for (int k = 0; k < (n + 3) / 4; ++k) {
       gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
-      gl_->subsample_targets.push_back(
-          gl::make_framebuffer({{gl_->codes.back().get()}}, {gl_->subsample_depth.get()}));
+      gl_->subsample_targets.push_back(gl::make_framebuffer({{gl_->codes.back().get()}}, depth));
+      all_codes.push_back({gl_->codes.back().get()});
     }
+    if (cull_) gl_->cull_target = gl::make_framebuffer(all_codes, depth);
   }
 
   // The uniform block: the frame's fields are written per call, the neighbours once.
@@ -399,6 +411,10 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                              {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
                                              {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
                                             defines, "RSAA pre-pass");
+  if (cull_)
+    gl_->cull_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                          {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_prepass_cull.frag")}},
+                                         defines, "RSAA pre-pass culling");
   gl_->post_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
                                         {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
                                        defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
@@ -480,7 +496,25 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     gl::check("RSAA pre-pass (multisample)");
     return;
   }
-  for (const gl::Framebuffer& fb : gl_->subsample_targets) glClearNamedFramebufferuiv(fb.get(), GL_COLOR, 0, zero);
+  if (cull_) {
+    // Codes 1 and stencil 0 everywhere, then codes 0 and stencil 1 where a pixel needs the draws.
+    const GLuint fb = gl_->cull_target.get();
+    const GLuint one[4] = {1, 1, 1, 1};
+    for (GLint k = 0; k < GLint(gl_->codes.size()); ++k) glClearNamedFramebufferuiv(fb, GL_COLOR, k, one);
+    const GLint no_stencil = 0;
+    glClearNamedFramebufferiv(fb, GL_STENCIL, 0, &no_stencil);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    glViewport(0, 0, frame.width, frame.height);
+    gl::set_pass_state(false);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xFFu);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glUseProgram(gl_->cull_program.get());
+    draw_fullscreen_triangle();
+
+  } else {
+    for (const gl::Framebuffer& fb : gl_->subsample_targets) glClearNamedFramebufferuiv(fb.get(), GL_COLOR, 0, zero);
+  }
   for (int i = 0; i < pattern_.size(); ++i) {
     // Subsample i goes to channel i % 4 of code texture i / 4; the depth buffer is its own.
     const GLuint fb = gl_->subsample_targets[i / 4].get();
@@ -491,6 +525,12 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     const glm::vec2 jitter = jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height);
     write_per_draw(jitter, i, {0.0, 0.0});
     set_depth_state();  // again: the previous callback may have changed it
+    if (cull_) {  // only where the marking pass set stencil 1; an early test skips the rest
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, 1, 0xFFu);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      glStencilMask(0u);
+    }
     glColorMaski(0, i % 4 == 0, i % 4 == 1, i % 4 == 2, i % 4 == 3);
     draw(i, jitter);
   }

@@ -62,11 +62,12 @@
 //
 // The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling
 // and rasterizer discard off, filled polygons, colour mask: the subsample's channel (jittered) or
-// all (multisample), and for the multisample pre-pass sample shading on.
+// all (multisample), for the multisample pre-pass sample shading on, and stencil test off, or,
+// with prepass_cull "neighbours", on (GL_EQUAL 1, no stencil writes).
 //
 // GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
-// program, depth test/function/mask, blending and colour masks of every draw buffer, scissor
-// test, culling, polygon mode, rasterizer discard, sample shading, the vertex array, the
+// program, depth test/function/mask, stencil test/functions/operations/masks, blending and
+// colour masks of every draw buffer, scissor test, culling, polygon mode, rasterizer discard, sample shading, the vertex array, the
 // textures and sampler objects bound to units 0-7 and to the pre-pass's three units, and the
 // uniform buffer binding; the engine's scissor, masks, culling and samplers do not reach the
 // pass. (A program the engine deleted while current cannot be restored: none is current after.)
@@ -131,6 +132,15 @@ struct RsaaSettings {
   // (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's outermost
   // pixels); on llvmpipe it is slower (per-sample shading), so it is not the default.
   std::string prepass = "jittered";
+  // Culling of the jittered pre-pass (ours): "off" draws every subsample for every pixel (the
+  // paper); "neighbours" first marks, once per frame, the pixels whose 3x3 neighbourhood of
+  // centres (centre_primitive) shows another triangle or background, and the per-subsample draws
+  // run behind an early stencil test there only; the other pixels' subsamples read as the
+  // centre's surface. Faster where large triangles fill the image (default scene: pre-pass -30%),
+  // slower on finely tessellated models (the marking pass costs more than it saves), and a
+  // feature thinner than a pixel that covers no centre of the neighbourhood is missed (README:
+  // "Culling the pre-pass"). Needs the jittered pre-pass.
+  std::string prepass_cull = "off";
   // How resolve() runs the post-process: "edges" (default) in two passes, an edge pass that copies
   // every pixel's colour and marks in a depth target the pixels whose mask is not all-similar,
   // then the resolve only there (an early depth test skips the rest: a driver that executes both
@@ -230,6 +240,7 @@ class RsaaPass {
   SamplePattern pattern_;
   bool multisample_ = false;
   bool union_ = false;   // the multisample pre-pass as two draws of half the samples (union pattern)
+  bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   int width_, height_;
   std::unique_ptr<Objects> gl_;

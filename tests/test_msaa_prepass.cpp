@@ -96,6 +96,55 @@ void expect_same_masks(const std::string& scene_name) {
   }
 }
 
+// The culled jittered pre-pass (RsaaSettings::prepass_cull) against the full one, RSAA 8x with
+// the defaults: the same masks but where a feature thinner than a pixel crosses a neighbourhood
+// without covering one of its centres.
+std::size_t culled_masks_differing(const std::string& scene_name, std::size_t* edges) {
+  const Scene scene = load_scene(scene_name);
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
+  RsaaSettings settings;
+  const std::vector<std::uint32_t> full = masks_of(gpu, view, settings);
+  settings.prepass_cull = "neighbours";
+  const std::vector<std::uint32_t> culled = masks_of(gpu, view, settings);
+  std::size_t differing = 0;
+  *edges = 0;
+  for (std::size_t p = 0; p < full.size(); ++p) {
+    differing += full[p] != culled[p];
+    *edges += full[p] != 0xFFu;
+  }
+  std::printf("%s: %zu of %zu edge masks differ with the culled pre-pass\n", scene_name.c_str(), differing, *edges);
+  return differing;
+}
+
+class PrePassCull : public test::GlTest {};
+
+TEST_F(PrePassCull, SameMasksWhereNoFeatureIsThinnerThanAPixel) {
+  for (const char* scene : {"builtin:default", "builtin:edges", "builtin:interpenetrating"}) {
+    std::size_t edges = 0;
+    EXPECT_EQ(culled_masks_differing(scene, &edges), 0u) << scene;
+    EXPECT_GT(edges, 500u) << scene << ": the comparison exercises edges";
+  }
+}
+
+TEST_F(PrePassCull, ThinWiresLoseFewMasks) {
+  std::size_t edges = 0;
+  const std::size_t differing = culled_masks_differing("builtin:fence", &edges);
+  EXPECT_GT(edges, 2000u);
+  EXPECT_LE(differing * 100, edges) << "more than 1% of the fence's edge masks change";
+}
+
+TEST_F(PrePassCull, NeedsTheJitteredPrePass) {
+  RsaaSettings settings;
+  settings.pattern = "gl4x";
+  settings.prepass = "msaa";
+  settings.prepass_cull = "neighbours";
+  EXPECT_THROW(RsaaPass(settings, 16, 16), std::invalid_argument);
+  settings.prepass = "jittered";
+  settings.prepass_cull = "sometimes";
+  EXPECT_THROW(RsaaPass(settings, 16, 16), std::invalid_argument);
+}
+
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnDefaultScene) { expect_same_masks("builtin:default"); }
 
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnEdgesScene) { expect_same_masks("builtin:edges"); }

@@ -214,7 +214,10 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
 
   // An engine's state, all of it different from what the pass draws with.
   const gl::Texture engine_texture = gl::make_texture_2d(GL_RGBA8, 4, 4);
-  const gl::Framebuffer engine_framebuffer = gl::make_framebuffer({{engine_texture.get()}});
+  // With stencil bits: GL reports the stencil reference clamped to the framebuffer's.
+  const gl::Texture engine_depth_stencil = gl::make_texture_2d(GL_DEPTH24_STENCIL8, 4, 4);
+  const gl::Framebuffer engine_framebuffer =
+      gl::make_framebuffer({{engine_texture.get()}}, {engine_depth_stencil.get()});
   glBindFramebuffer(GL_FRAMEBUFFER, engine_framebuffer.get());
   glViewport(1, 2, 3, 4);
   glUseProgram(renderer.shade_program());
@@ -252,8 +255,15 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glDepthRange(0.0, 0.0);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(0.0f, -1.0e6f);
+  // A stencil test that would reject everything (the culled pre-pass draws with its own).
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_NEVER, 7, 0x0Fu);
+  glStencilOp(GL_INCR, GL_DECR, GL_INVERT);
+  glStencilMask(0x3u);
 
-  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  RsaaSettings settings;
+  settings.prepass_cull = "neighbours";  // the pass's stencil state too
+  RsaaPass pass(settings, kWidth, kHeight);
   const RsaaFrame frame = scene.frame();
   scene.render_subsamples(pass);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
@@ -305,6 +315,18 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glGetDoublev(GL_DEPTH_RANGE, depth_range);
   EXPECT_EQ(depth_range[1], 0.0);
   EXPECT_TRUE(glIsEnabled(GL_POLYGON_OFFSET_FILL));
+  GLint stencil_func = 0, stencil_ref = 0, stencil_value_mask = 0, stencil_fail = 0, stencil_writemask = 0;
+  glGetIntegerv(GL_STENCIL_FUNC, &stencil_func);
+  glGetIntegerv(GL_STENCIL_REF, &stencil_ref);
+  glGetIntegerv(GL_STENCIL_VALUE_MASK, &stencil_value_mask);
+  glGetIntegerv(GL_STENCIL_FAIL, &stencil_fail);
+  glGetIntegerv(GL_STENCIL_WRITEMASK, &stencil_writemask);
+  EXPECT_TRUE(glIsEnabled(GL_STENCIL_TEST));
+  EXPECT_EQ(stencil_func, GL_NEVER);
+  EXPECT_EQ(stencil_ref, 7);
+  EXPECT_EQ(stencil_value_mask, 0x0F);
+  EXPECT_EQ(stencil_fail, GL_INCR);
+  EXPECT_EQ(stencil_writemask, 0x3);
 
   // The engine's state did not reach the pass: the same frame without it gives the same image.
   glDisable(GL_SCISSOR_TEST);
@@ -318,6 +340,7 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthRange(0.0, 1.0);
   glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_STENCIL_TEST);
   const gl::Texture clean_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   scene.render_subsamples(pass);
   pass.resolve(frame, clean_output.get());

@@ -124,6 +124,11 @@ step "post-process at 1280x720" post-1280.md
 $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
   --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc,rsaa 8x sadp-plane auth1 cap1.5 ms sc single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc" \
   --out-dir "$out/post-1280" >"$out/post-1280.md"
+step "the culled pre-pass at 1280x720" prepass-cull.md
+$rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
+  --width 1280 --height 720 --frames 3 --orbit-frames 2 \
+  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc,rsaa 8x sadp-plane auth1 cap1.5 ms sc cull" \
+  --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
 step "how cost grows: image size, triangles, lights" growth.md
 $rsaa bench --growth --out-dir "$out/growth" \
   --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc,rsaa 8x sadp-plane auth1 cap1.5 ms sc,rsaa 8x sadp-plane auth0" \

@@ -69,6 +69,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.threshold = o.threshold >= 0.0 ? float(o.threshold) : 0.4f;
   s.code_bits = o.code_bits;
   s.prepass = o.prepass;
+  s.prepass_cull = o.prepass_cull;
   s.split_cap = float(o.split_cap);
   s.multi_surface = o.multi_surface;
   s.split_check = o.split_check;
@@ -91,6 +92,9 @@ void validate_rsaa(const TechniqueOptions& o) {
   }
   if (o.prepass != "jittered" && o.prepass != "msaa")
     bad("rsaa --prepass must be jittered or msaa, not '" + o.prepass + "'");
+  if (o.prepass_cull != "off" && o.prepass_cull != "neighbours")
+    bad("rsaa --prepass-cull must be off or neighbours, not '" + o.prepass_cull + "'");
+  if (o.prepass_cull != "off" && o.prepass != "jittered") bad("rsaa --prepass-cull needs --prepass jittered");
   if (!o.table.empty() && !o.pattern.empty()) bad("rsaa --table brings its own sample pattern: leave out --pattern");
   if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32) bad("rsaa --code-bits must be 8, 16 or 32");
   if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)
@@ -111,6 +115,7 @@ std::string rsaa_extension_label(const TechniqueOptions& o) {
   if (o.multi_surface != "fetch") label << " ms";
   if (o.split_check != "off") label << " sc";
   if (o.post != "edges") label << " " << o.post << "-pass";
+  if (o.prepass_cull != "off") label << " cull";
   return label.str();
 }
 

@@ -77,6 +77,11 @@ std::vector<TechniqueOptions> default_techniques() {
   TechniqueOptions single_pass = technique_options("rsaa", 8);
   single_pass.post = "single";
   list.push_back(single_pass);
+  // The defaults with the culled jittered pre-pass, beside the full one (same masks but where
+  // features thinner than a pixel slip between pixel centres).
+  TechniqueOptions culled = technique_options("rsaa", 8);
+  culled.prepass_cull = "neighbours";
+  list.push_back(culled);
   return list;
 }
 

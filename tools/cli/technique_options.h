@@ -37,6 +37,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "draw with per-sample shading, where the driver samples the table's positions; two "
                   "draws, the second shifted, for a union pattern such as tables/custom-gl4x-union.json)")
       ->capture_default_str();
+  cmd->add_option("--prepass-cull", o.prepass_cull,
+                  "rsaa (ours): off | neighbours (the jittered pre-pass draws only where the 3x3 neighbourhood "
+                  "shows another surface; a feature thinner than a pixel between pixel centres is missed)")
+      ->capture_default_str();
   cmd->add_option("--split-cap", o.split_cap,
                   "rsaa (ours): cap the k-means split at this many thresholds (>= 1), so a clearly different "
                   "subsample is dissimilar even beside a far more different third surface; 0 = the paper's split")
