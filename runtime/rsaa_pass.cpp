@@ -280,7 +280,22 @@ RsaaFrame RsaaTargets::frame(const glm::mat4& inverse_projection) const {
 }
 
 SamplePattern query_gl_sample_pattern(int samples) {
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  const auto renderer = [] {
+    const GLubyte* name = glGetString(GL_RENDERER);
+    return std::string(name ? reinterpret_cast<const char*>(name) : "unknown");
+  };
+  if (samples < 1 || samples > max_samples)
+    throw std::invalid_argument("the GL driver (" + renderer() + ") offers at most " + std::to_string(max_samples) +
+                                " samples per pixel (GL_MAX_SAMPLES): no " + std::to_string(samples) +
+                                "-sample pattern to read");
   const gl::Texture texture = gl::make_texture_2d_multisample(GL_RGBA8, 1, 1, samples);
+  GLint actual = 0;  // a driver may round a count up to one it has
+  glGetTextureLevelParameteriv(texture.get(), 0, GL_TEXTURE_SAMPLES, &actual);
+  if (actual != samples)
+    throw std::invalid_argument("the GL driver (" + renderer() + ") gives " + std::to_string(actual) + " samples for " +
+                                std::to_string(samples) + ": it has no " + std::to_string(samples) + "-sample pattern");
   const gl::Framebuffer fb = gl::make_framebuffer({{texture.get()}});
   glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
   std::vector<Vec2> positions;

@@ -80,6 +80,25 @@ TEST_F(Runtime, DriverPatternMatchesTheCheckedInGl4xTable) {
   for (int i = 0; i < 4; ++i) EXPECT_LT(length(driver.positions[i] - table.pattern.positions[i]), 1e-6);
 }
 
+// glNx patterns are read from the driver (rsaa train --pattern gl8x on a GPU with 8x MSAA); a
+// count the driver does not have is refused naming its limit, not read as garbage.
+TEST_F(Runtime, DriverPatternsOfCountsTheDriverLacksAreRefused) {
+  EXPECT_EQ(gl_pattern_samples("gl8x"), 8);
+  EXPECT_EQ(gl_pattern_samples("gl16x"), 16);
+  EXPECT_EQ(gl_pattern_samples("gl3x"), 0);
+  EXPECT_EQ(gl_pattern_samples("d3d8x"), 0);
+  EXPECT_TRUE(is_known_pattern_name("gl8x"));
+  GLint max_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  try {
+    query_gl_sample_pattern(2 * max_samples);
+    ADD_FAILURE() << "a pattern of " << 2 * max_samples << " samples was read";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("GL_MAX_SAMPLES"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(query_gl_sample_pattern(max_samples).size(), max_samples);
+}
+
 TEST_F(Runtime, EveryVariantRunsWithinMeasuredQualityBounds) {
   const Image reference = render("builtin:default", technique_options("ssaa", 64));
   ASSERT_TRUE(all_finite(reference));

@@ -122,8 +122,14 @@ int representative_dissimilar(const SamplePattern& pattern, Mask mask) {
   return best;
 }
 
+int gl_pattern_samples(const std::string& name) {
+  for (int n : {2, 4, 8, 16})
+    if (name == "gl" + std::to_string(n) + "x") return n;
+  return 0;
+}
+
 bool is_known_pattern_name(const std::string& name) {
-  return is_builtin_pattern(name) || name == "gl4x" ||
+  return is_builtin_pattern(name) || gl_pattern_samples(name) > 0 ||
          (name.rfind("custom-", 0) == 0 && name.size() > 7 && is_valid_pattern_name(name));
 }
 

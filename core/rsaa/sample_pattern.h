@@ -61,7 +61,9 @@ PixelStep outside_pixel_towards(Vec2 sample);
 int representative_dissimilar(const SamplePattern& pattern, Mask mask);
 
 // Names a table may carry besides the built-ins: patterns whose positions come from the
-// table itself ("gl4x", read from the GL driver, and "custom-..." patterns).
+// table itself ("gl2x", "gl4x", "gl8x", "gl16x", read from a GL driver, and "custom-..." patterns).
 bool is_known_pattern_name(const std::string& name);
+// The sample count of a driver pattern name "glNx" (N = 2, 4, 8 or 16), 0 for any other name.
+int gl_pattern_samples(const std::string& name);
 
 }  // namespace rsaa

@@ -109,14 +109,14 @@ int run_train(const TrainArgs& a) {
   if (a.pattern.empty()) throw std::invalid_argument("--pattern is required (or --from-scene)");
   const auto start = std::chrono::steady_clock::now();
   TrainOptions options;
-  if (a.positions.empty() && a.pattern == "gl4x") {
+  if (a.positions.empty() && gl_pattern_samples(a.pattern) > 0) {
     gl::HeadlessContext context;  // the pattern of this machine's GL driver
-    options.pattern = query_gl_sample_pattern(4);
+    options.pattern = query_gl_sample_pattern(gl_pattern_samples(a.pattern));
   } else if (a.positions.empty()) {
     options.pattern = builtin_pattern(a.pattern);
   } else {
-    if (a.pattern != "gl4x" && a.pattern.rfind("custom-", 0) != 0)
-      throw std::invalid_argument("--positions needs --pattern gl4x or --pattern custom-NAME");
+    if (gl_pattern_samples(a.pattern) == 0 && a.pattern.rfind("custom-", 0) != 0)
+      throw std::invalid_argument("--positions needs --pattern glNx (a driver's pattern read elsewhere) or --pattern custom-NAME");
     options.pattern = pattern_from_positions(a.pattern, parse_positions(a.positions));
   }
   options.cases = a.cases;
@@ -180,7 +180,8 @@ Action add_train_command(CLI::App& app) {
       "train", "Fit one resampling offset per similarity mask on random line cases and write "
                "DIR/P.json, DIR/P.glsl, DIR/P.hlsl");
   cmd->add_option("--pattern", args->pattern,
-                  "Sample pattern: d3d4x, d3d8x, d3d16x; gl4x (read from the GL driver); custom-NAME with --positions");
+                  "Sample pattern: d3d4x, d3d8x, d3d16x; gl2x, gl4x, gl8x, gl16x (read from this GL driver, "
+                  "refused where it has fewer samples); custom-NAME with --positions");
   cmd->add_option("--positions", args->positions,
                   "Subsample positions in pixel space (+y down), \"x,y x,y ...\"");
   cmd->add_option("--cases", args->cases, "Number of line cases, half one-line, half two-line")
