@@ -330,6 +330,8 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
     throw std::invalid_argument("RSAA multi_surface must be fetch or neighbours, not '" + settings.multi_surface + "'");
   if (settings.split_check != "off" && settings.split_check != "neighbours")
     throw std::invalid_argument("RSAA split_check must be off or neighbours, not '" + settings.split_check + "'");
+  if (settings.fetch_check != "off" && settings.fetch_check != "neighbours")
+    throw std::invalid_argument("RSAA fetch_check must be off or neighbours, not '" + settings.fetch_check + "'");
   if (settings.depth != "gl" && settings.depth != "zero-to-one" && settings.depth != "reverse-z")
     throw std::invalid_argument("RSAA depth must be gl, zero-to-one or reverse-z, not '" + settings.depth + "'");
   if (zero_to_one(settings)) defines += "#define RSAA_DEPTH_ZERO_TO_ONE\n";
@@ -342,6 +344,7 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
   }
   if (settings.multi_surface == "neighbours") defines += "#define RSAA_MULTI_SURFACE_NEIGHBOURS\n";
   if (settings.split_check == "neighbours") defines += "#define RSAA_SPLIT_CHECK_NEIGHBOURS\n";
+  if (settings.fetch_check == "neighbours") defines += "#define RSAA_FETCH_CHECK_NEIGHBOURS\n";
   if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
   return defines;
 }

@@ -39,6 +39,8 @@ std::vector<TechniqueOptions> rsaa_variants() {
         o.split_cap = 0.0;  // the paper's split and resolve
         o.multi_surface = "fetch";
         o.split_check = "off";
+  o.fetch_check = "off";
+        o.fetch_check = "off";
         list.push_back(o);
       }
   return list;

@@ -17,6 +17,8 @@
 //                            different surfaces: a sample average from the neighbours (below)
 //   RSAA_SPLIT_CHECK_NEIGHBOURS  (optional) a subsample above the threshold that the split calls
 //                            similar turns dissimilar when its outside pixel shows a like surface
+//   RSAA_FETCH_CHECK_NEIGHBOURS  (optional) a pixel none of whose dissimilar subsamples finds a like
+//                            surface in its outside pixel fetches with half the offset
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
@@ -103,6 +105,38 @@ uint rsaa_split_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SA
     if (t * 1.5 > s && t < s * 1.5) mask &= ~(1u << i);
   }
   return mask;
+}
+#endif
+
+#ifdef RSAA_FETCH_CHECK_NEIGHBOURS
+// Fetch check (ours, RsaaSettings::fetch_check = "neighbours"). The fetch brings in the colours of
+// the outside pixels; it helps only where they show what the dissimilar subsamples saw. A
+// dissimilar subsample is matched when the outside pixel in its direction shows a surface about as
+// different from the centre (within a factor 3; the background for a background subsample, any
+// surface for a subsample of a background pixel). When no dissimilar subsample is matched (a
+// sliver whose surface no neighbour centre shows: thin side faces, a contour line beside another
+// surface), the offset is halved. Returns the factor for the offset, 1 or 0.5.
+float rsaa_fetch_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask) {
+  bool centre_is_surface = rsaa_is_surface(centre_normal);
+  vec3 position = rsaa_post_position(pixel);
+  vec3 normal = rsaa_decode_normal(centre_normal);
+  ivec2 last = ivec2(rsaa_viewport) - 1;
+  bool matched = false;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    if ((mask & (1u << i)) != 0u) continue;
+    ivec2 q = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
+    uvec2 q_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
+    bool q_is_surface = rsaa_is_surface(q_normal);
+    float s = similarity[i];
+    if (!centre_is_surface || s >= 1.0e9 || !q_is_surface) {
+      // s is 1e9 for a subsample that sees no surface (rsaa_decode_similarity).
+      matched = matched || (centre_is_surface ? s >= 1.0e9 && !q_is_surface : q_is_surface);
+      continue;
+    }
+    float t = rsaa_similarity(position, normal, rsaa_post_position(q), rsaa_decode_normal(q_normal));
+    matched = matched || (t * 3.0 > s && t < s * 3.0);
+  }
+  return matched ? 1.0 : 0.5;
 }
 #endif
 
@@ -241,6 +275,9 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   vec2 offset;
   int representative;
   rsaa_table_entry(mask, offset, representative);
+#ifdef RSAA_FETCH_CHECK_NEIGHBOURS
+  offset *= rsaa_fetch_check(pixel, centre_normal, similarity, mask);
+#endif
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
   vec4 resolved;

@@ -11,8 +11,8 @@
 //   RSAA_AUTH              0 none, 1 post-pass authentication (2 is done in the pre-pass: 0 here)
 //   RSAA_CODE_BITS         8, 16 or 32: bits of a stored similarity code
 //   RSAA_SIMILARITY_DEPTH / RSAA_SIMILARITY_SADP_PLANE   (optional) as in rsaa_common.glsl
-//   RSAA_SPLIT_CAP, RSAA_MULTI_SURFACE_NEIGHBOURS, RSAA_SPLIT_CHECK_NEIGHBOURS  (optional) as in
-//                          rsaa_post.glsl
+//   RSAA_SPLIT_CAP, RSAA_MULTI_SURFACE_NEIGHBOURS, RSAA_SPLIT_CHECK_NEIGHBOURS,
+//   RSAA_FETCH_CHECK_NEIGHBOURS  (optional) as in rsaa_post.glsl
 // Resources (registers overridable by defining RSAA_REGISTER_*):
 //   t0 colour (linear), t1 centre normal (uint2: rsaa_encode_normal, 0 = background), t2 centre
 //   depth (0 near .. 1 far), t3.. the codes: subsample i in channel i % 4 of texture i / 4, as
@@ -161,6 +161,31 @@ bool RsaaSplitCheckDissimilar(int2 pixel, uint2 centre_normal, int k, float s) {
 }
 #endif
 
+#ifdef RSAA_FETCH_CHECK_NEIGHBOURS
+// rsaa_post.glsl's rsaa_fetch_check: 0.5 when no dissimilar subsample finds a like surface in the
+// outside pixel in its direction, else 1.
+float RsaaFetchCheck(int2 pixel, uint2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask) {
+  bool centre_is_surface = RsaaIsSurface(centre_normal);
+  float3 position = RsaaViewPosition(pixel);
+  float3 normal = RsaaDecodeNormal(centre_normal);
+  bool matched = false;
+  [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    if ((mask & (1u << i)) != 0u) continue;
+    int2 q = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[i]), int2(0, 0), int2(rsaa_viewport) - 1);
+    uint2 q_normal = rsaa_centre_normal.Load(int3(q, 0));
+    bool q_is_surface = RsaaIsSurface(q_normal);
+    float s = similarity[i];
+    if (!centre_is_surface || s >= 1.0e9 || !q_is_surface) {
+      matched = matched || (centre_is_surface ? (s >= 1.0e9 && !q_is_surface) : q_is_surface);
+      continue;
+    }
+    float t = RsaaSimilarity(position, normal, RsaaViewPosition(q), RsaaDecodeNormal(q_normal));
+    matched = matched || (t * 3.0 > s && t < s * 3.0);
+  }
+  return matched ? 1.0 : 0.5;
+}
+#endif
+
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
 // rsaa_post.glsl's rsaa_centre_differs and rsaa_multi_surface.
 bool RsaaCentreDiffers(int2 pixel, uint2 normal, float3 position, int2 other) {
@@ -260,6 +285,9 @@ float4 RsaaResolve(int2 pixel) {
     else if (d >= farthest) { representative = k; farthest = d; }
   }
   float2 offset = rsaa_offsets[mask];
+#ifdef RSAA_FETCH_CHECK_NEIGHBOURS
+  offset *= RsaaFetchCheck(pixel, centre_normal, similarity, mask);
+#endif
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
   float4 resolved;

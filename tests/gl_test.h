@@ -34,6 +34,7 @@ inline RsaaSettings paper_resolve(RsaaSettings settings = {}) {
   settings.split_cap = 0.0f;
   settings.multi_surface = "fetch";
   settings.split_check = "off";
+  settings.fetch_check = "off";
   return settings;
 }
 

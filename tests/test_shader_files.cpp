@@ -228,11 +228,14 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   settings.split_cap = 0.0f;
   settings.multi_surface = "fetch";
   settings.split_check = "off";
+  settings.fetch_check = "off";
   if (GetParam() == 2) {
     settings.split_cap = 2.5f;
     settings.multi_surface = "neighbours";
     settings.split_check = "neighbours";
-    extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS -DRSAA_SPLIT_CHECK_NEIGHBOURS";
+    settings.fetch_check = "neighbours";
+    extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS -DRSAA_SPLIT_CHECK_NEIGHBOURS"
+                 " -DRSAA_FETCH_CHECK_NEIGHBOURS";
   }
   const ResolvedScene resolved(settings, kWidth, kHeight);
   const View& view = resolved.scene.view;
@@ -330,14 +333,17 @@ TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
 TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
   test::TempDir dir;
   const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") +
-                                " --split-cap 2.5 --multi-surface neighbours --split-check neighbours");
+                                " --split-cap 2.5 --multi-surface neighbours --split-check neighbours"
+                                " --fetch-check neighbours");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* file : {"out/rsaa_prepass.glsl", "out/rsaa_post.frag", "out/rsaa_post.hlsl"}) {
     const std::string text = test::read_text(dir.file(file));
     EXPECT_NE(text.find("#define RSAA_SPLIT_CAP 2.5\n"), std::string::npos) << file;
     EXPECT_NE(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS\n"), std::string::npos) << file;
     EXPECT_NE(text.find("#define RSAA_SPLIT_CHECK_NEIGHBOURS\n"), std::string::npos) << file;
-    EXPECT_NE(text.find("--split-cap 2.5 --multi-surface neighbours --split-check neighbours"), std::string::npos)
+    EXPECT_NE(text.find("#define RSAA_FETCH_CHECK_NEIGHBOURS\n"), std::string::npos) << file;
+    EXPECT_NE(text.find("--split-cap 2.5 --multi-surface neighbours --split-check neighbours --fetch-check neighbours"),
+              std::string::npos)
         << file;
   }
   EXPECT_EQ(glslang_errors("frag", test::read_text(dir.file("out/rsaa_post.frag"))), "");
@@ -345,13 +351,14 @@ TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
                                       dir.file("out/rsaa_post.hlsl"));
   EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
   const auto paper =
-      test::run_rsaa("shaders --out-dir " + dir.file("paper") + " --similarity sadp --split-cap 0 --multi-surface fetch --split-check off");
+      test::run_rsaa("shaders --out-dir " + dir.file("paper") + " --similarity sadp --split-cap 0 --multi-surface fetch --split-check off --fetch-check off");
   ASSERT_EQ(paper.exit_code, 0) << paper.output;
   for (const char* file : {"paper/rsaa_prepass.glsl", "paper/rsaa_post.frag", "paper/rsaa_post.hlsl"}) {
     const std::string text = test::read_text(dir.file(file));
     EXPECT_EQ(text.find("#define RSAA_SPLIT_CAP"), std::string::npos) << file;
     EXPECT_EQ(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS"), std::string::npos) << file;
     EXPECT_EQ(text.find("#define RSAA_SPLIT_CHECK_NEIGHBOURS"), std::string::npos) << file;
+    EXPECT_EQ(text.find("#define RSAA_FETCH_CHECK_NEIGHBOURS"), std::string::npos) << file;
   }
 }
 

@@ -94,7 +94,7 @@ for scene in builtin:default "$engine" builtin:grazing; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}
   # Before (the paper's SADP, then sadp-plane, each with the paper's resolve) and after (the defaults).
   for variant in sadp sadp-plane defaults; do
-    options=(--similarity "$variant" --auth 0 --split-cap 0 --multi-surface fetch --split-check off)
+    options=(--similarity "$variant" --auth 0 --split-cap 0 --multi-surface fetch --split-check off --fetch-check off)
     [ "$variant" = defaults ] && options=()
     step "diagnosis, $name, $variant" "diagnosis/$name-$variant.md"
     $rsaa diagnose --scene "$scene" "${options[@]}" --out-dir "$out/diagnosis/$name-$variant" \
@@ -112,12 +112,12 @@ for scene in builtin:default "$engine" "$truck" /usr/share/assimp/models/OBJ/spi
   done
 done
 step "bench, RSAA against its baselines" bench-rsaa.md
-$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc" \
+$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
   --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"
 step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)" prepass-union.md
 { for t in custom-gl4x-union d3d8x gl4x; do $rsaa eval-table tables/$t.json 2>/dev/null; done
   $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
-    --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc,rsaa 8x sadp-plane auth1 cap1.5 ms sc" \
+    --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
     --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
 # Cost at the sizes engines run (the post-process as multiples of a copy pass) and how it grows.
 step "post-process at 1280x720" post-1280.md

@@ -73,6 +73,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.split_cap = float(o.split_cap);
   s.multi_surface = o.multi_surface;
   s.split_check = o.split_check;
+  s.fetch_check = o.fetch_check;
   s.post = o.post;
   return s;
 }
@@ -105,15 +106,18 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --multi-surface must be fetch or neighbours, not '" + o.multi_surface + "'");
   if (o.split_check != "off" && o.split_check != "neighbours")
     bad("rsaa --split-check must be off or neighbours, not '" + o.split_check + "'");
+  if (o.fetch_check != "off" && o.fetch_check != "neighbours")
+    bad("rsaa --fetch-check must be off or neighbours, not '" + o.fetch_check + "'");
   if (o.post != "edges" && o.post != "single") bad("rsaa --post must be edges or single, not '" + o.post + "'");
 }
 
-// " cap1.5 ms sc": the resolve's options beyond the paper, when used.
+// " cap1.5 ms sc fc": the resolve's options beyond the paper, when used.
 std::string rsaa_extension_label(const TechniqueOptions& o) {
   std::ostringstream label;
   if (o.split_cap > 0.0) label << " cap" << o.split_cap;
   if (o.multi_surface != "fetch") label << " ms";
   if (o.split_check != "off") label << " sc";
+  if (o.fetch_check != "off") label << " fc";
   if (o.post != "edges") label << " " << o.post << "-pass";
   if (o.prepass_cull != "off") label << " cull";
   return label.str();

@@ -36,6 +36,7 @@ std::string command_line(const ShadersArgs& a) {
          std::to_string(s.code_bits) + (s.split_cap > 0.0f ? " --split-cap " + cap_text(s.split_cap) : "") +
          (s.multi_surface == "fetch" ? "" : " --multi-surface " + s.multi_surface) +
          (s.split_check == "off" ? "" : " --split-check " + s.split_check) +
+         (s.fetch_check == "off" ? "" : " --fetch-check " + s.fetch_check) +
          (s.depth == "gl" ? "" : " --depth " + s.depth) + " --prepass " + s.prepass +
          " --first-unit " +
          std::to_string(s.prepass_first_unit) + " --uniform-binding " + std::to_string(s.uniform_binding);
@@ -71,7 +72,8 @@ int run_shaders(ShadersArgs a) {
     if (a.settings.similarity == "sadp-plane") hlsl_defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
     // The options beyond the paper, as rsaa_shader_defines() writes them.
     for (const char* name :
-         {"#define RSAA_SPLIT_CAP ", "#define RSAA_MULTI_SURFACE_NEIGHBOURS", "#define RSAA_SPLIT_CHECK_NEIGHBOURS"}) {
+         {"#define RSAA_SPLIT_CAP ", "#define RSAA_MULTI_SURFACE_NEIGHBOURS", "#define RSAA_SPLIT_CHECK_NEIGHBOURS",
+          "#define RSAA_FETCH_CHECK_NEIGHBOURS"}) {
       const std::size_t at = defines.find(name);
       if (at != std::string::npos) hlsl_defines += defines.substr(at, defines.find('\n', at) + 1 - at);
     }
@@ -118,6 +120,10 @@ Action add_shaders_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"fetch", "neighbours"}));
   cmd->add_option("--split-check", s.split_check, "Ours: neighbours (subsamples above the threshold) | off (the paper's)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "neighbours"}));
+  cmd->add_option("--fetch-check", s.fetch_check,
+                  "Ours: neighbours (half the offset where no outside pixel shows what a subsample saw) | off (the paper's)")
       ->capture_default_str()
       ->check(CLI::IsMember({"off", "neighbours"}));
   cmd->add_option("--depth", s.depth,

@@ -55,6 +55,11 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "dissimilar when the outside pixel in its direction shows a surface about as different) | "
                   "off (the paper's split decides)")
       ->capture_default_str();
+  cmd->add_option("--fetch-check", o.fetch_check,
+                  "rsaa (ours): neighbours (a pixel none of whose dissimilar subsamples finds a surface about as "
+                  "different in the outside pixel in its direction fetches with half the offset) | off (the paper's "
+                  "fetch)")
+      ->capture_default_str();
   cmd->add_option("--post", o.post,
                   "rsaa post-process: edges (an edge pass marks the pixels to resolve, the resolve runs only "
                   "there) | single (one pass over every pixel); the same image")
