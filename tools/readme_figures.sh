@@ -64,7 +64,7 @@ if [[ $quick == 1 ]]; then
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   step "bench --growth --quick" growth.md
-  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc" \
+  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
     --out-dir "$out/growth" >"$out/growth.md"
   papers_figures
   echo "quick figures done in $((SECONDS - started)) s; docs/ untouched" >&2
@@ -122,16 +122,16 @@ step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)"
 # Cost at the sizes engines run (the post-process as multiples of a copy pass) and how it grows.
 step "post-process at 1280x720" post-1280.md
 $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc,rsaa 8x sadp-plane auth1 cap1.5 ms sc single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc" \
+  --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc" \
   --out-dir "$out/post-1280" >"$out/post-1280.md"
 step "the culled pre-pass at 1280x720" prepass-cull.md
 $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
   --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc,rsaa 8x sadp-plane auth1 cap1.5 ms sc cull" \
+  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc cull" \
   --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
 step "how cost grows: image size, triangles, lights" growth.md
 $rsaa bench --growth --out-dir "$out/growth" \
-  --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc,rsaa 8x sadp-plane auth1 cap1.5 ms sc,rsaa 8x sadp-plane auth0" \
+  --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth0" \
   >"$out/growth.md"
 for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
 step "bench" bench.md
