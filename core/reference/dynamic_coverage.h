@@ -80,7 +80,7 @@ enum class DynamicCoverageRules { Seed, Surface };
 // whatever the depth, and the plane evaluated at the pixel centre adds a few such steps: one
 // fragment rendered at 10^3, 1 and 10^-3 times the default scene's units has depths within
 // 5 steps of each other for 99.9% of fragments, within 55 for 99.99% (tiny or sliver triangles
-// extrapolated far from their vertices). 16 steps are 9.5 x 10^-7; a surface 1 cm in front of
+// extrapolated far from their vertices; tests/test_coverage_units.cpp). 16 steps are 9.5 x 10^-7; a surface 1 cm in front of
 // another at 10 m is 5 x 10^-5 nearer in window depth with the default scene's 0.5 near plane.
 constexpr float kSeedDepthTie = 0x1p-20f;
 // `a` is closer than `b` beyond float rounding (shaders/coverage_resolve.frag computes the same).
