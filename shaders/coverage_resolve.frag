@@ -322,12 +322,15 @@ vec3 slot_colour[2];
 float slot_depth[2];
 uint slot_mask[2];
 
+// seed_closer() of core/reference/dynamic_coverage.h: closer beyond float rounding (2^-20).
+bool closer(float a, float b) { return b - a > 9.5367431640625e-7; }
+
 void insert_fragment(CoverageRecord r) {
   uint incoming = r.coverage.x & 0xffffu;
   float id = r.depth.x;
   if (incoming == 0u) return;
-  if (!(id < slot_depth[0] || id < slot_depth[1])) return;
-  int slot = slot_depth[0] < slot_depth[1] ? 1 : 0;
+  if (!(closer(id, slot_depth[0]) || closer(id, slot_depth[1]))) return;
+  int slot = closer(slot_depth[0], slot_depth[1]) ? 1 : 0;
   slot_colour[slot] = r.colour;
   slot_depth[slot] = id;
   slot_mask[slot] = incoming;
@@ -351,7 +354,7 @@ void load_state(uint b) {
 }
 
 vec3 resolve_pixel() {
-  int near = slot_depth[0] < slot_depth[1] ? 0 : 1, far = 1 - near;
+  int near = closer(slot_depth[0], slot_depth[1]) ? 0 : 1, far = 1 - near;
   float total = float(bitCount(slot_mask[0] | slot_mask[1]));
   if (total == 0.0) return slot_colour[near];
   return (float(bitCount(slot_mask[near])) * slot_colour[near] +

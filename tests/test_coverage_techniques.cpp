@@ -321,6 +321,35 @@ TEST(DynamicCoverage, TiesZeroCoverageAndNonFiniteInput) {
   EXPECT_FLOAT_EQ(std::min(many.colour[0].r, many.colour[1].r), 8.0f);
 }
 
+// Depths that differ by float rounding only are ties in all three comparisons: the third
+// triangle of a surface whose first two hold both slots, at depths a few float steps apart in
+// either order, is dropped (the literal float comparison would evict one of them, and which one
+// depends on those last bits); the resolve takes slot 1 as the nearer, as on exact ties. A
+// difference beyond the bound still counts.
+TEST(DynamicCoverage, DepthsWithinFloatRoundingAreTies) {
+  const float d = 0.93f, step = std::nextafter(d, 1.0f) - d;  // 2^-24 near 0.93
+  ASSERT_LT(4.0f * step, kSeedDepthTie);
+  for (float second : {d + 3.0f * step, d - 3.0f * step}) {
+    DynamicCoveragePixel p({1, 1, 1}, DynamicCoverageRules::Seed);
+    EXPECT_TRUE(p.insert(fragment(0, 0x00FF, d, 0, {1, 0, 0})));       // slot 0
+    EXPECT_TRUE(p.insert(fragment(1, 0x0FF0, second, 0, {0, 1, 0})));  // slot 1 (at 1: farther)
+    EXPECT_FALSE(p.insert(fragment(2, 0xF000, d + step, 0, {0, 0, 1})));
+    EXPECT_FALSE(p.insert(fragment(3, 0xF000, d - step, 0, {0, 0, 1})));
+    EXPECT_EQ(p.mask[0], 0x00FF);
+    EXPECT_EQ(p.mask[1], 0x0FF0);
+    // Nearer: slot 1 with its 8 samples, slot 0 with the 4 of its 8 slot 1 does not cover; TCC 12.
+    const Rgb c = p.resolve();
+    EXPECT_FLOAT_EQ(c.g, 8.0f / 12.0f);
+    EXPECT_FLOAT_EQ(c.r, 4.0f / 12.0f);
+  }
+  // Beyond the bound: closer than slot 1, which is the farther and is evicted.
+  DynamicCoveragePixel p({1, 1, 1}, DynamicCoverageRules::Seed);
+  p.insert(fragment(0, 0x00FF, d, 0, {1, 0, 0}));
+  p.insert(fragment(1, 0x0FF0, d + 2.0f * kSeedDepthTie, 0, {0, 1, 0}));
+  EXPECT_TRUE(p.insert(fragment(2, 0xF000, d + 0.5f * kSeedDepthTie, 0, {0, 0, 1})));
+  EXPECT_EQ(p.mask[1], 0xF000);
+  EXPECT_FLOAT_EQ(p.resolve().r, 8.0f / 12.0f);  // slot 0 is the nearer beyond the bound
+}
 
 // ---- Dynamic coverage: surface rules -----------------------------------------------------
 

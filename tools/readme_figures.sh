@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Reproduces every number, table and picture of the README in one go: trainer speed and trades,
 # table accuracy, the per-scene comparison tables, the bench (tables, Pareto and pass plots,
-# crops), the papers' figures, the scene-specific tables and the reliability report. Logs go to
+# crops), the papers' figures, the coverage family's goals on held-out models, the
+# scene-specific tables and the reliability report. Logs go to
 # OUT_DIR/*.md; the pictures the README shows are copied to docs/images/.
 # Usage: tools/readme_figures.sh [--quick] [--only papers] [OUT_DIR]
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
@@ -61,6 +62,9 @@ if [[ $quick == 1 ]]; then
   step "diagnosis, edges at 160x120" diagnosis.md
   $rsaa diagnose --scene builtin:edges --width 160 --height 120 --surface-samples 4 --out-dir "$out/diagnosis" \
     >"$out/diagnosis.md"
+  step "coverage goals, default scene at 160x120" coverage-goals.md
+  bash tools/coverage_goals.sh --width 160 --height 120 --out-dir "$out/coverage-goals" builtin:default \
+    >"$out/coverage-goals.md"
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   step "bench --growth --quick" growth.md
@@ -142,6 +146,13 @@ cp "$out/bench/pareto-2CylinderEngine.png" docs/images/bench_pareto_engine.png
 cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
 cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
 papers_figures
+# The coverage family's goals and the scale test on held-out models (issue 14; about 16 minutes).
+models=/usr/share/assimp/models
+step "coverage goals on held-out models" coverage-goals.md
+bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals" $models/3DS/fels.3ds $models/OBJ/WusonOBJ.obj \
+  $models/Collada/duck.dae $models/IFC/AC14-FZK-Haus.ifc $models/Q3D/E-AT-AT.q3o $models/MS3D/jeep1.ms3d \
+  $models/COB/dwarf.cob $models/BLEND/SuzanneSubdiv_252.blend $models/IQM/mrfixit.iqm \
+  $models/X3D/ComputerKeyboard.x3d >"$out/coverage-goals.md"
 mkdir -p "$out/scene-tables"
 for scene in builtin:default "$engine"; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}

@@ -49,15 +49,15 @@ bool DynamicCoveragePixel::insert(const CoverageFragment& f) {
   if (incoming == 0 || !std::isfinite(id) || !std::isfinite(f.colour.r) || !std::isfinite(f.colour.g) ||
       !std::isfinite(f.colour.b))
     return false;
-  if (!(id < depth[0] || id < depth[1])) return false;
-  const int slot = depth[0] < depth[1] ? 1 : 0;  // evict the farther (slot 0 on a tie)
+  if (!(seed_closer(id, depth[0]) || seed_closer(id, depth[1]))) return false;
+  const int slot = seed_closer(depth[0], depth[1]) ? 1 : 0;  // evict the farther (slot 0 on a tie)
   colour[slot] = f.colour, depth[slot] = id, mask[slot] = incoming;
   return true;
 }
 
 Rgb DynamicCoveragePixel::resolve() const {
   if (rules_ == DynamicCoverageRules::Surface) return surfaces_.resolve(dynamic_coverage_pattern(), clear_);
-  const int near = depth[0] < depth[1] ? 0 : 1, far = 1 - near;
+  const int near = seed_closer(depth[0], depth[1]) ? 0 : 1, far = 1 - near;
   const float total = bits(Mask(mask[0] | mask[1]));
   if (total == 0.0f) return colour[near];
   const float wn = bits(mask[near]) / total, wf = bits(Mask(mask[far] & ~mask[near])) / total;

@@ -11,7 +11,16 @@
 //  - A fragment that covers no coverage sample (a partial overlap between samples, a thin
 //    triangle) is ignored, as hardware coverage would: it never evicts a slot.
 //  - Depth ties: "closer" is strict, so an equal-depth fragment is dropped when both slots are
-//    at that depth; with equal slot depths the else-branch of the seed replaces slot 0.
+//    at that depth; with equal slot depths the else-branch of the seed replaces slot 0 (and the
+//    resolve's else-branch takes slot 1 as the nearer).
+//  - Equal within float rounding is equal (seed_closer()): every comparison of two depths (the
+//    incoming against each slot, the slots against each other at the eviction and the resolve)
+//    counts a difference up to kSeedDepthTie as a tie. The two triangles of a planar quad have
+//    equal depths over the reals, but their window depths, computed in float from different
+//    vertices, differ in the last bits, and which one comes out nearer changes with anything that
+//    moves those bits (the scene's units: 10^3 and 10^-3 gave 46-47 dB against the unscaled
+//    image at 640x480, 38-39 at 160x120). Over the reals the rules are the seed's; only
+//    differences float cannot resolve are ties.
 //  - A non-finite depth or colour: the fragment is ignored (a NaN would never compare closer
 //    anyway, and must not reach the output).
 //  - Total coverage 0 (TCC = 0) cannot follow from the rules above (slots start with full masks
@@ -65,6 +74,17 @@
 namespace rsaa {
 
 enum class DynamicCoverageRules { Seed, Surface };
+
+// The seed rules' tie bound in window depth (0 near, 1 far): 16 float steps of a depth in
+// [0.5, 1), 2^-20. Window depths come out of z / w * 0.5 + 0.5, whose last step rounds at 2^-24
+// whatever the depth, and the plane evaluated at the pixel centre adds a few such steps: one
+// fragment rendered at 10^3, 1 and 10^-3 times the default scene's units has depths within
+// 5 steps of each other for 99.9% of fragments, within 55 for 99.99% (tiny or sliver triangles
+// extrapolated far from their vertices; tests/test_coverage_units.cpp). 16 steps are 9.5 x 10^-7; a surface 1 cm in front of
+// another at 10 m is 5 x 10^-5 nearer in window depth with the default scene's 0.5 near plane.
+constexpr float kSeedDepthTie = 0x1p-20f;
+// `a` is closer than `b` beyond float rounding (shaders/coverage_resolve.frag computes the same).
+inline bool seed_closer(float a, float b) { return b - a > kSeedDepthTie; }
 
 // The surface rules as DCAA settings (what the GL resolve is given too).
 DcaaSettings dynamic_coverage_surface_settings();
