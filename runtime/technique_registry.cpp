@@ -56,6 +56,7 @@ TechniqueOptions rsaa_default_without_extensions() {
   o.split_cap = 0.0;
   o.multi_surface = "fetch";
   o.split_check = "off";
+  o.fetch_check = "off";
   return o;
 }
 
