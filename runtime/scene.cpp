@@ -21,6 +21,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "runtime/allocation_budget.h"
+
 namespace rsaa {
 
 glm::vec3 Scene::bounds_min() const {
@@ -59,12 +61,22 @@ struct LoadState {
 thread_local std::uintptr_t t_stack_low = 0;
 thread_local char t_overflow_message[640];
 thread_local std::size_t t_overflow_length = 0;
+// The same for an importer that uses a null pointer from a malloc the import's budget refused
+// (allocation_budget.h: a refused malloc returns null; pugixml, zlib and minizip check, code that
+// does not faults).
+thread_local char t_refused_message[640];
+thread_local std::size_t t_refused_length = 0;
 struct sigaction g_previous_segv;
 
 void on_segv(int signal, siginfo_t* info, void* context) {
   const auto address = reinterpret_cast<std::uintptr_t>(info->si_addr);
   if (t_stack_low != 0 && address < t_stack_low + 65536 && address + (std::uintptr_t{1} << 20) > t_stack_low) {
     [[maybe_unused]] const ssize_t n = ::write(2, t_overflow_message, t_overflow_length);
+    ::_exit(1);
+  }
+  const AllocationBudget* budget = t_stack_low != 0 ? AllocationBudget::on_this_thread() : nullptr;
+  if (budget && budget->refused_request() != 0) {
+    [[maybe_unused]] const ssize_t n = ::write(2, t_refused_message, t_refused_length);
     ::_exit(1);
   }
   // Not a loader overflow: hand the fault to whoever handled it before (by default, a crash).
@@ -96,6 +108,11 @@ void guard_loader_stack(const std::string& spec, std::vector<char>& alternate_st
                               std::to_string(size >> 20) + " MiB stack\n";
   t_overflow_length = std::min(message.size(), sizeof t_overflow_message);
   std::memcpy(t_overflow_message, message.data(), t_overflow_length);
+  const std::string refused = "rsaa: error: '" + spec.substr(0, 400) +
+                              "': the model importer crashed on an allocation its memory budget refused: "
+                              "the file declares more data than it holds\n";
+  t_refused_length = std::min(refused.size(), sizeof t_refused_message);
+  std::memcpy(t_refused_message, refused.data(), t_refused_length);
   t_stack_low = reinterpret_cast<std::uintptr_t>(low);
 }
 

@@ -3,7 +3,9 @@
 // a message naming the file and the budget; valid models still load.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <new>
 #include <string>
@@ -27,6 +29,62 @@ TEST(AllocationBudget, RefusesARequestBeyondItBeforeAllocatingAndOnlyOnItsThread
   }
   std::vector<char> outside(std::size_t{64} << 20);  // no budget any more
   EXPECT_EQ(outside.size(), std::size_t{64} << 20);
+}
+
+// malloc and its family count too (assimp's libraries allocate with them: pugixml's XML nodes,
+// rapidjson, zlib). Called through volatile pointers so that the compiler cannot drop a pair.
+TEST(AllocationBudget, CountsMallocCallocReallocAndTheAlignedForms) {
+  if (!AllocationBudget::counts_malloc()) GTEST_SKIP() << "a sanitizer owns malloc: only operator new is counted";
+  void* (*volatile do_malloc)(std::size_t) = std::malloc;
+  void* (*volatile do_calloc)(std::size_t, std::size_t) = std::calloc;
+  void* (*volatile do_realloc)(void*, std::size_t) = std::realloc;
+  void* (*volatile do_aligned)(std::size_t, std::size_t) = std::aligned_alloc;
+  int (*volatile do_posix_memalign)(void**, std::size_t, std::size_t) = ::posix_memalign;
+  void (*volatile do_free)(void*) = std::free;
+  constexpr std::size_t kMiB = std::size_t{1} << 20;
+  {
+    AllocationBudget budget(4 * kMiB);
+    void* half = do_malloc(2 * kMiB);
+    ASSERT_NE(half, nullptr);
+    EXPECT_GE(budget.live(), std::int64_t(2 * kMiB));
+    errno = 0;
+    EXPECT_EQ(do_malloc(3 * kMiB), nullptr);
+    EXPECT_EQ(errno, ENOMEM);
+    EXPECT_EQ(budget.refused_request(), 3 * kMiB);
+    EXPECT_EQ(do_calloc(3, kMiB), nullptr);
+    EXPECT_EQ(do_calloc(std::size_t{1} << 40, std::size_t{1} << 40), nullptr);  // overflows
+    EXPECT_EQ(do_aligned(64, 3 * kMiB), nullptr);
+    void* aligned = nullptr;
+    EXPECT_EQ(do_posix_memalign(&aligned, 64, 3 * kMiB), ENOMEM);
+    EXPECT_EQ(do_posix_memalign(&aligned, 3, 16), EINVAL);
+    // Growing is admitted against what is live (old and new are both live for the copy); a
+    // refused realloc leaves the block as it was.
+    EXPECT_EQ(do_realloc(half, 3 * kMiB), nullptr);
+    void* smaller = do_realloc(half, kMiB);
+    ASSERT_NE(smaller, nullptr);
+    EXPECT_LT(budget.live(), std::int64_t(2 * kMiB));
+    void* grown = do_realloc(smaller, 2 * kMiB);
+    ASSERT_NE(grown, nullptr);
+    ASSERT_EQ(do_posix_memalign(&aligned, 4096, kMiB), 0);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(aligned) % 4096, 0u);
+    do_free(aligned);
+    do_free(grown);
+    EXPECT_LT(budget.live(), 4096);
+    EXPECT_GE(budget.peak(), std::int64_t(3 * kMiB));
+  }
+  void* outside = do_malloc(64 * kMiB);  // no budget any more
+  EXPECT_NE(outside, nullptr);
+  do_free(outside);
+}
+
+// Freeing blocks allocated before the budget gives their room back but does not lift the limit.
+TEST(AllocationBudget, FreeingOlderBlocksDoesNotLiftTheLimit) {
+  std::vector<char>* older = new std::vector<char>(std::size_t{8} << 20);
+  AllocationBudget budget(1 << 20);
+  delete older;
+  EXPECT_LT(budget.live(), 0);
+  EXPECT_THROW(std::vector<char>(std::size_t{1} << 30), std::bad_alloc);
+  EXPECT_NO_THROW(std::vector<char>(std::size_t{4} << 20));
 }
 
 std::string refusal(const std::string& path) {
