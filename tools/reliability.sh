@@ -128,7 +128,7 @@ trainer, their tests and the table fuzz loop with AddressSanitizer and Undefined
 - \`kill -9\` in the microseconds between the three renames of a table set leaves a mixed set
   on disk until the next write into that directory (any \`rsaa train\` or \`rsaa shaders\` there,
   or any write_files_atomically), which finishes the dead run's renames from its commit journal
-  (\`.rsaa-commit.tmp-PID-N.journal\`, written once every temporary is in place) before anything
+  (\`.rsaa-commit.rsaa-tmp-PID-N.journal\`, written once every temporary is in place) before anything
   else (test \`AtomicFiles.ARunKilledAmongItsRenamesIsFinishedByTheNext\`). rsaa's readers read
   the set through the journal in between (test
   \`AtomicFiles.AReaderBetweenTheRenamesOfAKilledRunReadsOneSet\`); a program that reads the
