@@ -261,7 +261,7 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                               {"bytes_per_pixel", r.bytes_per_pixel},
                               {"pareto", r.pareto}});
   }
-  return out.dump(2) + "\n";
+  return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string results_csv(const std::vector<TechniqueResult>& results) {
