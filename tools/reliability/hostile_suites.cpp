@@ -19,6 +19,7 @@
 #include <thread>
 
 #include <OpenImageIO/imageio.h>
+#include <zlib.h>
 
 #include "core/util/atomic_file.h"
 #include "image/image_io.h"
@@ -42,12 +43,13 @@ struct Feed {
   std::function<std::string(const std::string& output)> check;
   std::uint64_t address_space = kInputAddressSpace;
   std::uint64_t max_processes = 0;
+  std::vector<std::string> environment{};  // run_limited's changes: "NAME=VALUE", or "NAME" to unset
 };
 
 Outcome judge(const Feed& f, const std::string& rsaa, std::string& detail) {
   std::vector<std::string> argv = {rsaa};
   argv.insert(argv.end(), f.args.begin(), f.args.end());
-  const RunResult r = run_limited(argv, kInputSeconds, f.address_space, f.max_processes);
+  const RunResult r = run_limited(argv, kInputSeconds, f.address_space, f.max_processes, f.environment);
   const std::string tail = r.output.substr(0, 300);
   if (r.timed_out) return detail = "still running after 60 s", Outcome::kFailed;
   if (r.signal) return detail = "killed by signal " + std::to_string(r.signal) + ": " + tail, Outcome::kFailed;
@@ -132,6 +134,34 @@ std::string tetrahedron_obj(double scale, double offset = 0.0, const std::string
   return s + "vt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/2\nf 1/1 2/2 4/3\n";
 }
 
+// A compressed XGL model (.zgl: two bytes, then raw deflate) whose XML is `repeats` times
+// "<a/>x" inside <WORLD>: a few hundred KB that inflate to 5 bytes per repeat, which the XML
+// parser inside assimp (pugixml) turns into two 64-byte nodes, allocated with malloc: about 26
+// bytes per inflated byte that only a budget counting malloc sees.
+std::string zgl_of_empty_elements(std::uint64_t repeats) {
+  z_stream z{};
+  if (deflateInit2(&z, 9, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY) != Z_OK) throw std::runtime_error("deflateInit2 failed");
+  std::string out(2, '\0'), block;
+  for (int k = 0; k < 65536; ++k) block += "<a/>x";
+  const std::string head = "<WORLD>", tail = "</WORLD>";
+  std::vector<unsigned char> buffer(1 << 16);
+  const auto feed = [&](const std::string& text, int flush) {
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
+    z.avail_in = uInt(text.size());
+    do {
+      z.next_out = buffer.data();
+      z.avail_out = uInt(buffer.size());
+      deflate(&z, flush);
+      out.append(reinterpret_cast<const char*>(buffer.data()), buffer.size() - z.avail_out);
+    } while (z.avail_out == 0);
+  };
+  feed(head, Z_NO_FLUSH);
+  for (std::uint64_t done = 0; done < repeats; done += 65536) feed(block, Z_NO_FLUSH);
+  feed(tail, Z_FINISH);
+  deflateEnd(&z);
+  return out;
+}
+
 bool make_fifo(const std::string& path) { return ::mkfifo(path.c_str(), 0600) == 0; }
 
 // The three table files agree: GLSL and HLSL are what the JSON's table gives.
@@ -148,7 +178,7 @@ std::string table_set_consistent(const std::string& dir, const std::string& stem
 
 std::size_t temporaries_in(const std::string& dir) {
   std::size_t n = 0;
-  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".tmp-") != std::string::npos;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".rsaa-tmp-") != std::string::npos;
   return n;
 }
 
@@ -199,6 +229,13 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
                         "0 0 0 1 0 0 0 1 0</float_array></source><vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/>"
                         "</vertices><triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/><p>0 1 2</p>"
                         "</triangles></mesh></geometry></library_geometries></COLLADA>\n");
+  // A texture face referring to texture vertex 99999999: assimp 5.2's ASE importer segfaults.
+  dir.write("crash.ase", "*3DSMAX_ASCIIEXPORT 200\n*GEOMOBJECT {\n*NODE_NAME \"a\"\n*MESH {\n*MESH_NUMVERTEX 3\n*MESH_NUMFACES 1\n"
+                         "*MESH_VERTEX_LIST {\n*MESH_VERTEX 0 0 0 0\n*MESH_VERTEX 1 1 0 0\n*MESH_VERTEX 2 0 1 0\n}\n"
+                         "*MESH_FACE_LIST {\n*MESH_FACE 0: A: 0 B: 1 C: 2\n}\n*MESH_NUMTVERTEX 1\n*MESH_TVERTLIST {\n"
+                         "*MESH_TVERT 0 0 0 0\n}\n*MESH_NUMTVFACES 1\n*MESH_TFACELIST {\n*MESH_TFACE 0 0 99999999 5\n}\n}\n}\n");
+  // 16 M repeats: 80 MB of XML in a 78 KB file, about 2 GB of pugixml nodes.
+  dir.write("elements.zgl", zgl_of_empty_elements(std::uint64_t{1} << 24));
   write_float_image(f("nan.exr"), 8, 8, 3, std::numeric_limits<float>::quiet_NaN());
   write_float_image(f("inf.exr"), 8, 8, 3, std::numeric_limits<float>::infinity());
   for (const char* scale : {"1e30", "1e-30", "1"}) dir.write(std::string("scale-") + scale + ".obj", tetrahedron_obj(std::stod(scale)));
@@ -253,7 +290,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
 
   std::vector<SuiteResult> suites;
   suites.push_back(run_class(
-      "hostile 1, crashes: format strings, thread and process limits, deep nesting, broken importer scenes",
+      "hostile 1, crashes: format strings, thread and process limits, deep nesting, broken importer scenes, importer crashes",
       {
           refuse("view --screenshot 'x%n.png'", {"view", "--screenshot", "x%n.png", "--keys", "Q"}, "--screenshot"),
           refuse("view --screenshot '%s%s%s'", {"view", "--screenshot", "%s%s%s", "--keys", "Q"}, "--screenshot"),
@@ -264,6 +301,8 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           nproc_3,
           refuse("assimp's RAW/WithTexture.raw (null child nodes; PreTransformVertices segfaulted)",
                  {"render", "--scene", kModels + "/RAW/WithTexture.raw", "--out", f("raw.png")}, "WithTexture.raw", f("raw.png")),
+          refuse("ASE whose texture face refers to texture vertex 99999999 (assimp segfaulted)",
+                 {"render", "--scene", f("crash.ase"), "--out", f("crash.png")}, "crashed on it (signal 11", f("crash.png")),
           Feed{"assimp's OpenGEX/camera.ogex (lights without nodes; an assertion aborted)",
                {"render", "--scene", kModels + "/OpenGEX/camera.ogex", "--width", "32", "--height", "24", "--out", f("ogex.png")}, "", f("ogex.png"), {}},
       },
@@ -300,6 +339,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("DirectX .x declaring 10^9 vertices", {"render", "--scene", f("huge.x"), "--out", f("out-9x.png")}, "huge.x", f("out-9x.png")),
           refuse("ASE declaring 10^9 vertices", {"render", "--scene", f("huge.ase"), "--out", f("out-9a.png")}, "huge.ase", f("out-9a.png")),
           refuse("Collada float_array of 10^9", {"render", "--scene", f("huge.dae"), "--out", f("out-9d.png")}, "huge.dae", f("out-9d.png")),
+          refuse("compressed XGL inflating to 16M XML elements (pugixml's malloc)", {"render", "--scene", f("elements.zgl"), "--out", f("out-9z.png")}, "more memory than its budget", f("out-9z.png")),
       },
       options));
 
@@ -310,7 +350,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
     const std::string shared = f("shared");
     fs::create_directories(shared);
     const pid_t dead = dead_pid();
-    const std::string stale = shared + "/.d3d4x.tmp-" + std::to_string(dead) + "-0.json";
+    const std::string stale = shared + "/.d3d4x.rsaa-tmp-" + std::to_string(dead) + "-0.json";
     std::ofstream(stale) << "half a table";
     std::vector<RunResult> runs(2);
     std::vector<std::thread> both;

@@ -40,13 +40,25 @@ std::string ScratchDir::write(const std::string& name, const std::string& bytes)
 }
 
 RunResult run_limited(const std::vector<std::string>& argv, double seconds, std::uint64_t address_space,
-                      std::uint64_t max_processes) {
+                      std::uint64_t max_processes, const std::vector<std::string>& environment) {
   const ScratchDir scratch;
   const std::string log = scratch.file("output");
   // Everything the child needs is made before fork: another thread may hold the malloc lock.
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  const auto name_of = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
+  std::vector<std::string> variables;
+  for (char** e = environ; *e; ++e) {
+    bool changed = false;
+    for (const std::string& change : environment) changed = changed || name_of(change) == name_of(*e);
+    if (!changed) variables.push_back(*e);
+  }
+  for (const std::string& change : environment)
+    if (change.find('=') != std::string::npos) variables.push_back(change);
+  std::vector<char*> envp;
+  for (const std::string& v : variables) envp.push_back(const_cast<char*>(v.c_str()));
+  envp.push_back(nullptr);
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error("fork failed");
@@ -63,7 +75,7 @@ RunResult run_limited(const std::vector<std::string>& argv, double seconds, std:
       if (::getuid() == 0 && (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0))
         ::_exit(126);
     }
-    ::execv(args[0], args.data());
+    ::execve(args[0], args.data(), envp.data());
     ::_exit(127);
   }
   RunResult r;
