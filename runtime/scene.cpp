@@ -366,11 +366,16 @@ void check_frameable(const Scene& scene, const std::string& what) {
 
 Scene scaled_scene(Scene scene, float factor) {
   if (!(factor > 0.0f) || !std::isfinite(factor)) throw std::invalid_argument("scene scale must be a finite number > 0");
+  if (factor == 1.0f) return scene;
   for (SceneVertex& v : scene.vertices) v.position *= factor;
   if (scene.camera) {
     scene.camera->eye *= factor, scene.camera->target *= factor;
     scene.camera->near_plane *= factor, scene.camera->far_plane *= factor;
   }
+  // Scaled out of the range that renders correctly in float, it would show only the background.
+  char what[64];
+  std::snprintf(what, sizeof what, "scene scaled by %g", double(factor));
+  check_frameable(scene, "'" + scene.name + "' " + what);
   return scene;
 }
 
