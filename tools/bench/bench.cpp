@@ -293,6 +293,10 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
     o.frames = j.at("timed_frames");
     o.lights = j.value("lights", 1);
     o.orbit_frames = j.at("orbit_frames");
+    // The report prints these: a hand-edited file with -5 or 1e10 was reported as it was.
+    validate_size(o.width, o.height);
+    if (o.frames < 1 || o.frames > 1000 || o.orbit_frames < 2 || o.orbit_frames > 1000 || o.lights < 1 || o.lights > 65)
+      throw std::runtime_error("timed_frames, orbit_frames or lights outside the bench's ranges");
     std::vector<TechniqueResult> results;
     for (const auto& e : j.at("results")) {
       TechniqueResult r;
