@@ -40,7 +40,8 @@ std::string ScratchDir::write(const std::string& name, const std::string& bytes)
 }
 
 RunResult run_limited(const std::vector<std::string>& argv, double seconds, std::uint64_t address_space,
-                      std::uint64_t max_processes, const std::vector<std::string>& environment) {
+                      std::uint64_t max_processes, const std::vector<std::string>& environment,
+                      std::uint64_t file_size_limit) {
   const ScratchDir scratch;
   const std::string log = scratch.file("output");
   // Everything the child needs is made before fork: another thread may hold the malloc lock.
@@ -69,6 +70,10 @@ RunResult run_limited(const std::vector<std::string>& argv, double seconds, std:
     ::dup2(null, 0), ::dup2(fd, 1), ::dup2(fd, 2);
     const rlimit limit{address_space, address_space};
     ::setrlimit(RLIMIT_AS, &limit);
+    if (file_size_limit > 0) {
+      const rlimit file_size{file_size_limit, file_size_limit};
+      ::setrlimit(RLIMIT_FSIZE, &file_size);
+    }
     if (max_processes > 0) {
       const rlimit processes{max_processes, max_processes};
       ::setrlimit(RLIMIT_NPROC, &processes);
