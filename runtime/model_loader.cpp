@@ -292,7 +292,13 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
   // A file the model refers to that was refused (a FIFO, a device, over the budget) refuses
   // the model too, even when the importer would go on without it.
   if (!io->refusal.empty()) throw std::runtime_error(what + ": " + io->refusal);
-  if (!ai || !ai->mRootNode) throw std::runtime_error(what + ": " + importer.GetErrorString());
+  if (!ai || !ai->mRootNode) {
+    // assimp catches an allocation failure and keeps only its what().
+    const std::string error = importer.GetErrorString();
+    throw std::runtime_error(what + ": " + (error == std::bad_alloc().what()
+                                                ? "out of memory while importing it (an address-space limit, ulimit -v?)"
+                                                : error));
+  }
 
   // The copy below allocates per vertex and index: counted first, against the budget.
   std::uint64_t vertex_total = 0, face_total = 0;

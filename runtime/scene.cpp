@@ -267,6 +267,8 @@ ImportedModel import_model_in_child(const std::string& path, const std::function
     std::string result;
     try {
       result = serialized(import_model(path));
+    } catch (const std::bad_alloc&) {
+      result = std::string(1, kRefused) + what + ": out of memory while importing it (an address-space limit, ulimit -v?)";
     } catch (const std::exception& e) {
       result = std::string(1, kRefused) + e.what();
     } catch (...) {
