@@ -252,6 +252,7 @@ ImportedModel import_model_in_child(const std::string& path, const std::function
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0)
     throw std::runtime_error(what + ": cannot start its import (pipe: " + std::strerror(errno) + ")");
+  std::fflush(nullptr);  // else a child that ends through exit or abort may write the parent's buffers again
   const pid_t pid = ::fork();
   if (pid < 0) {
     const int error = errno;
