@@ -297,6 +297,7 @@ ImportedModel import_model_in_child(const std::string& path, const std::function
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+  if (started) started(0);  // reaped: its PID may be reused, not to be killed any more
   if (!refusal.empty()) throw std::runtime_error(refusal);
   if (!bytes.empty() && (bytes[0] == kRefused || bytes[0] == kFault)) throw std::runtime_error(bytes.substr(1));
   if (WIFSIGNALED(status)) {

@@ -122,7 +122,8 @@ Scene with_textures(ImportedModel model);
 
 // import_model in a child process, so that an importer that crashes (assimp 5.2 segfaults or
 // asserts on many malformed files) ends the child, not the caller: throws std::runtime_error
-// naming the model and the signal. `started` gets the child's PID (to kill it on a time limit).
+// naming the model and the signal. `started` gets the child's PID (to kill it on a time limit),
+// then 0 once the child is reaped.
 ImportedModel import_model_in_child(const std::string& path, const std::function<void(int pid)>& started);
 
 // The scene with every position, and its built-in camera (eye, target, near and far), multiplied
