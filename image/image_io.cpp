@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -37,6 +39,60 @@ std::string process_limit_text() {
   return " (ulimit -u " + std::to_string(limit.rlim_cur) + ")";
 }
 
+std::string address_space_limit_text() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return "";
+  return " (ulimit -v " + std::to_string(limit.rlim_cur >> 10) + ")";
+}
+
+// What the process prints if it is ended while the module loads (the terminate handler below):
+// written before the load, since the handler must not allocate.
+char g_load_failure[1024];
+std::size_t g_load_failure_length = 0;
+
+void write_stderr(const char* text, std::size_t length) {
+  while (length > 0) {
+    const ssize_t n = ::write(2, text, length);
+    if (n <= 0) return;
+    text += n, length -= std::size_t(n);
+  }
+}
+
+[[noreturn]] void on_terminate_while_loading() {
+  write_stderr(g_load_failure, g_load_failure_length);
+  if (const std::exception_ptr active = std::current_exception()) {
+    try {
+      std::rethrow_exception(active);
+    } catch (const std::exception& e) {
+      write_stderr(" (", 2), write_stderr(e.what(), std::strlen(e.what())), write_stderr(")", 1);
+    } catch (...) {
+    }
+  }
+  write_stderr("\n", 1);
+  ::_exit(1);
+}
+
+// dlopen with a terminate handler in place: the check of load_codec leaves a race (another
+// process of this user can start between it and the load), and log4cplus then calls
+// std::terminate from its static initialiser. The process still ends (nothing can be done
+// inside a static initialiser), but with a message naming what failed and why, and status 1.
+void* load_module_ending_clearly(const char* path) {
+  const std::string message =
+      "rsaa: error: the process ended while loading the image module (" + std::string(path) +
+      "): OpenImageIO's logger (log4cplus, loaded with OpenVDB) could not start the " +
+      std::to_string(kThreadsStartedByTheModule) +
+      " threads it starts as it loads, and a thread it cannot start ends the process; the process limit" +
+      process_limit_text() + " or the address-space limit" + address_space_limit_text() +
+      " was reached after rsaa checked there was room (another process of this user may have started); raise "
+      "the limit or end other processes of this user";
+  g_load_failure_length = std::min(message.size(), sizeof g_load_failure);
+  std::memcpy(g_load_failure, message.data(), g_load_failure_length);
+  const std::terminate_handler previous = std::set_terminate(on_terminate_while_loading);
+  void* module = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
+  std::set_terminate(previous);
+  return module;
+}
+
 const OiioCodec& load_codec() {
   if (threads_that_can_start(kThreadsStartedByTheModule) < kThreadsStartedByTheModule)
     throw std::runtime_error(
@@ -46,7 +102,7 @@ const OiioCodec& load_codec() {
         process_limit_text() + " leaves no room for them; raise the limit (ulimit -u) or end other processes of this user");
   std::string tried;
   for (const char* path : {RSAA_OIIO_MODULE, RSAA_OIIO_MODULE_INSTALLED}) {
-    void* module = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    void* module = load_module_ending_clearly(path);
     if (!module) {
       tried += std::string(" ") + ::dlerror() + ";";
       continue;
@@ -100,6 +156,7 @@ Rgb linear_pixel(const DecodedImage& d, std::size_t i) {
 
 void write_image(const std::string& path, const Image& image) {
   if (image.width <= 0 || image.height <= 0) throw std::runtime_error(path + ": empty image");
+  check_replaceable(path);  // as every other output: a device or a link is not replaced by the rename
   const bool linear = is_float_format(path);
   const std::filesystem::path target(path);
   // Keep the extension so that OpenImageIO picks the same format for the temporary file.

@@ -1,7 +1,12 @@
 // The OpenImageIO side of image_io, built as the module librsaa_oiio.so (see oiio_codec.h).
 #include "image/oiio_codec.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 
@@ -89,16 +94,47 @@ DecodedImage decode(const std::string& name, const std::string& bytes, const Ima
   return d;
 }
 
+// `bytes` into the new file `file`, every write checked.
+bool write_new_file(const std::string& file, const std::vector<unsigned char>& bytes, std::string& error) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) return error = std::strerror(errno), false;
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error = std::string("write failed: ") + std::strerror(n < 0 ? errno : ENOSPC);
+      ::close(fd);
+      return false;
+    }
+    done += std::size_t(n);
+  }
+  if (::close(fd) != 0) return error = std::string("write failed: ") + std::strerror(errno), false;
+  return true;
+}
+
 bool write(const std::string& format_name, const std::string& file, int width, int height, bool floats,
            const void* pixels, std::string& error) {
   auto out = OIIO::ImageOutput::create(format_name);
   if (!out) return error = "no image format for this extension", false;
   OIIO::ImageSpec spec(width, height, 3, floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   if (!floats) spec.attribute("oiio:ColorSpace", "sRGB");
+  // OIIO's PNG writer did not report a full disk: a truncated PNG was renamed into place. PNG,
+  // EXR and JPEG are encoded in memory (byte for byte the same files) and written with checked
+  // writes; other formats (TIFF's in-memory output is broken in OIIO 2.4) are read back.
+  const std::string name = out->format_name();
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput proxy(encoded);
+  const bool in_memory = (name == "png" || name == "openexr" || name == "jpeg") && out->supports("ioproxy") &&
+                         out->set_ioproxy(&proxy);
   bool ok = out->open(file, spec) && out->write_image(spec.format, pixels);
   ok = out->close() && ok;
-  if (!ok) error = out->geterror();
-  return ok;
+  if (!ok) return error = out->geterror(), false;
+  if (in_memory) return write_new_file(file, encoded, error);
+  auto in = OIIO::ImageInput::open(file);
+  std::vector<float> back(std::size_t(width) * height * 3);
+  if (!in || !in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, back.data()))
+    return error = "the file written does not read back (a full disk?)", false;
+  return true;
 }
 
 }  // namespace

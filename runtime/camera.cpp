@@ -1,5 +1,6 @@
 #include "runtime/camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -63,8 +64,16 @@ Camera parse_camera(const std::string& text, const glm::vec3& lo, const glm::vec
   if (v.size() == 7) c.fov_y_degrees = v[6];
   if (!(c.fov_y_degrees > 1.0f && c.fov_y_degrees < 170.0f))
     throw std::invalid_argument("--camera: fov must be within (1, 170) degrees");
+  // Beyond this, or with the eye this close to the target, float cannot hold the view (a camera
+  // at 3e38 or 1e20 rendered only the background without a word).
+  constexpr float kLargest = 1e9f;
+  for (float x : v)
+    if (std::abs(x) > kLargest)
+      throw std::invalid_argument("--camera: coordinates must be within +-1e9 to render correctly in float");
   const glm::vec3 forward = c.target - c.eye;
-  if (glm::length(forward) <= 0.0f) throw std::invalid_argument("--camera: eye equals target");
+  const float largest = std::max({1.0f, glm::length(c.eye), glm::length(c.target)});
+  if (!(glm::length(forward) > 1e-6f * largest))
+    throw std::invalid_argument("--camera: eye equals target (closer than float can tell apart)");
   if (glm::length(glm::cross(glm::normalize(forward), c.up)) < 1e-4f) c.up = {0.0f, 0.0f, 1.0f};
   // Near and far enclose the scene's bounding sphere as seen from the eye.
   const glm::vec3 centre = 0.5f * (lo + hi);
@@ -72,6 +81,8 @@ Camera parse_camera(const std::string& text, const glm::vec3& lo, const glm::vec
   const float distance = glm::length(centre - c.eye);
   c.far_plane = distance + 1.5f * radius;
   c.near_plane = std::max(distance - 1.5f * radius, c.far_plane * 1e-4f);
+  if (!(c.near_plane < c.far_plane) || !std::isfinite(c.far_plane))
+    throw std::invalid_argument("--camera: the scene is too far from the eye for its size to render in float");
   return c;
 }
 

@@ -237,7 +237,7 @@ glm::vec3 material_albedo(const aiMaterial* material) {
 
 }  // namespace
 
-Scene load_model(const std::string& path, ImportMeasurement* measurement) {
+ImportedModel import_model(const std::string& path, ImportMeasurement* measurement) {
   const std::string what = "model '" + path + "'";
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw std::runtime_error(what + ": file not found");
@@ -286,13 +286,19 @@ Scene load_model(const std::string& path, ImportMeasurement* measurement) {
           " bytes per byte of its " + std::to_string(io->input_bytes) + " bytes of files, at most " +
           mib(kImportBytesMax) + "): the importer asked for " + std::to_string(budget.refused_request()) +
           " bytes with " + mib(std::uint64_t(std::max<std::int64_t>(0, budget.live_when_refused()))) +
-          " in use; the file declares more than it holds");
+          " in use; the file declares (or inflates to) more than it holds");
     io->end_budget();
   }
   // A file the model refers to that was refused (a FIFO, a device, over the budget) refuses
   // the model too, even when the importer would go on without it.
   if (!io->refusal.empty()) throw std::runtime_error(what + ": " + io->refusal);
-  if (!ai || !ai->mRootNode) throw std::runtime_error(what + ": " + importer.GetErrorString());
+  if (!ai || !ai->mRootNode) {
+    // assimp catches an allocation failure and keeps only its what().
+    const std::string error = importer.GetErrorString();
+    throw std::runtime_error(what + ": " + (error == std::bad_alloc().what()
+                                                ? "out of memory while importing it (an address-space limit, ulimit -v?)"
+                                                : error));
+  }
 
   // The copy below allocates per vertex and index: counted first, against the budget.
   std::uint64_t vertex_total = 0, face_total = 0;
@@ -304,12 +310,12 @@ Scene load_model(const std::string& path, ImportMeasurement* measurement) {
                              std::to_string(kMaxSceneVertices) + " vertices and " +
                              std::to_string(kMaxSceneTriangles) + " faces");
 
-  Scene scene;
+  ImportedModel model;
+  Scene& scene = model.scene;
   scene.name = path;
-  std::vector<int> texture_of_material(ai->mNumMaterials, -1);
   std::vector<glm::vec3> albedo_of_material(ai->mNumMaterials, glm::vec3(0.8f));
+  model.textures.resize(ai->mNumMaterials);
   const std::filesystem::path directory = std::filesystem::path(path).parent_path();
-  std::uint64_t texels = 0;
   for (unsigned m = 0; m < ai->mNumMaterials; ++m) {
     const aiMaterial* material = ai->mMaterials[m];
     albedo_of_material[m] = material_albedo(material);
@@ -317,33 +323,15 @@ Scene load_model(const std::string& path, ImportMeasurement* measurement) {
     if (material->GetTexture(aiTextureType_BASE_COLOR, 0, &file) != aiReturn_SUCCESS &&
         material->GetTexture(aiTextureType_DIFFUSE, 0, &file) != aiReturn_SUCCESS)
       continue;
-    // A texture that is missing or cannot be decoded leaves the material's colour (the geometry
-    // is still worth drawing); one that is not a regular file or is over the budget refuses the
-    // model, as every other reader does.
-    std::string texture_name;
-    try {
-      DecodedImage decoded;
-      if (const aiTexture* embedded = ai->GetEmbeddedTexture(file.C_Str())) {
-        if (embedded->mHeight != 0) continue;  // raw texel arrays: not used by the test models
-        texture_name = path + ": embedded texture " + std::string(file.C_Str());
-        const std::string bytes(reinterpret_cast<const char*>(embedded->pcData), embedded->mWidth);
-        decoded = decode_image(std::string("embedded.") + embedded->achFormatHint, bytes, kTextureBudget);
-      } else {
-        texture_name = (directory / file.C_Str()).string();
-        if (!std::filesystem::exists(texture_name, ec)) continue;
-        decoded = decode_image(texture_name,
-                               read_whole_file(texture_name, kTextureBudget.file_bytes, "texture"),
-                               kTextureBudget);
-      }
-      texels += std::uint64_t(decoded.width) * decoded.height;
-      if (texels > kMaxSceneTexels)
-        throw LimitError(texture_name + ": the textures of the model exceed " +
-                                 std::to_string(kMaxSceneTexels) + " texels in all");
-      scene.textures.push_back(to_texture(decoded));
-      texture_of_material[m] = int(scene.textures.size()) - 1;
-    } catch (const LimitError& e) {
-      throw std::runtime_error(what + ": " + e.what());
-    } catch (const std::runtime_error&) {
+    TextureSource& source = model.textures[m];
+    if (const aiTexture* embedded = ai->GetEmbeddedTexture(file.C_Str())) {
+      if (embedded->mHeight != 0) continue;  // raw texel arrays: not used by the test models
+      source.name = path + ": embedded texture " + std::string(file.C_Str());
+      source.embedded = true;
+      source.bytes.assign(reinterpret_cast<const char*>(embedded->pcData), embedded->mWidth);
+      source.format_hint = embedded->achFormatHint;
+    } else {
+      source.name = (directory / file.C_Str()).string();
     }
   }
 
@@ -369,8 +357,8 @@ Scene load_model(const std::string& path, ImportMeasurement* measurement) {
       }
       scene.vertices.push_back(out);
     }
-    DrawRange draw{static_cast<std::uint32_t>(scene.indices.size()), 0,
-                   texture_of_material[mesh->mMaterialIndex]};
+    // The material for now: with_textures turns it into the texture's index.
+    DrawRange draw{static_cast<std::uint32_t>(scene.indices.size()), 0, int(mesh->mMaterialIndex)};
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
       const aiFace& face = mesh->mFaces[f];
       if (face.mNumIndices != 3) continue;
@@ -392,7 +380,50 @@ Scene load_model(const std::string& path, ImportMeasurement* measurement) {
                                             " had non-finite or out-of-range vertices)"
                                       : ""));
   check_frameable(scene, what);
-  return scene;
+  return model;
+}
+
+Scene with_textures(ImportedModel model) {
+  Scene& scene = model.scene;
+  const std::string what = "model '" + scene.name + "'";
+  std::vector<int> texture_of_material(model.textures.size(), -1);
+  std::uint64_t texels = 0;
+  std::error_code ec;
+  for (std::size_t m = 0; m < model.textures.size(); ++m) {
+    const TextureSource& source = model.textures[m];
+    if (source.name.empty()) continue;
+    // A texture that is missing or cannot be decoded leaves the material's colour (the geometry
+    // is still worth drawing); one that is not a regular file or is over the budget refuses the
+    // model, as every other reader does.
+    try {
+      DecodedImage decoded;
+      if (source.embedded) {
+        decoded = decode_image("embedded." + source.format_hint, source.bytes, kTextureBudget);
+      } else {
+        if (!std::filesystem::exists(source.name, ec)) continue;
+        decoded = decode_image(source.name, read_whole_file(source.name, kTextureBudget.file_bytes, "texture"),
+                               kTextureBudget);
+      }
+      texels += std::uint64_t(decoded.width) * decoded.height;
+      if (texels > kMaxSceneTexels)
+        throw LimitError(source.name + ": the textures of the model exceed " + std::to_string(kMaxSceneTexels) +
+                         " texels in all");
+      scene.textures.push_back(to_texture(decoded));
+      texture_of_material[m] = int(scene.textures.size()) - 1;
+    } catch (const LimitError& e) {
+      throw std::runtime_error(what + ": " + e.what());
+    } catch (const std::runtime_error&) {
+    }
+  }
+  for (DrawRange& draw : scene.draws)
+    draw.texture = draw.texture >= 0 && std::size_t(draw.texture) < texture_of_material.size()
+                       ? texture_of_material[std::size_t(draw.texture)]
+                       : -1;
+  return std::move(model.scene);
+}
+
+Scene load_model(const std::string& path, ImportMeasurement* measurement) {
+  return with_textures(import_model(path, measurement));
 }
 
 }  // namespace rsaa

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -104,6 +105,26 @@ struct ImportMeasurement {
   std::int64_t peak_bytes = 0;
 };
 Scene load_model(const std::string& path, ImportMeasurement* measurement = nullptr);
+
+// load_model in two steps: the import (assimp, which a malformed file can crash: run in a child
+// process by load_scene_within) and the decoding of the textures it names.
+struct TextureSource {
+  std::string name;  // the file, or the model and the embedded texture's name; empty: none
+  bool embedded = false;
+  std::string bytes, format_hint;  // an embedded texture's encoded bytes and format
+};
+struct ImportedModel {
+  Scene scene;  // each draw's `texture` is its material until with_textures
+  std::vector<TextureSource> textures;  // per material
+};
+ImportedModel import_model(const std::string& path, ImportMeasurement* measurement = nullptr);
+Scene with_textures(ImportedModel model);
+
+// import_model in a child process, so that an importer that crashes (assimp 5.2 segfaults or
+// asserts on many malformed files) ends the child, not the caller: throws std::runtime_error
+// naming the model and the signal. `started` gets the child's PID (to kill it on a time limit),
+// then 0 once the child is reaped.
+ImportedModel import_model_in_child(const std::string& path, const std::function<void(int pid)>& started);
 
 // The scene with every position, and its built-in camera (eye, target, near and far), multiplied
 // by `factor` (> 0, finite): the same picture in other units, for the tests that a technique's

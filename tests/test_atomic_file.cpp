@@ -56,15 +56,31 @@ TEST(AtomicFiles, TemporariesOfDeadRunsAreRemovedOthersKept) {
   const pid_t child = fork();
   if (child == 0) _exit(0);
   waitpid(child, nullptr, 0);  // a PID that no longer runs
-  const std::string dead = dir.file(".t.tmp-" + std::to_string(child) + "-0.json");
-  const std::string live = dir.file(".t.tmp-" + std::to_string(getppid()) + "-0.json");
-  const std::string unrelated = dir.file("notes.tmp-1");
-  for (const auto& p : {dead, live, unrelated}) test::write_text(p, "x");
+  const std::string pid = std::to_string(child);
+  const std::string dead = dir.file(".t.rsaa-tmp-" + pid + "-0.json");
+  const std::string live = dir.file(".t.rsaa-tmp-" + std::to_string(getppid()) + "-0.json");
+  // A user's files that look like temporaries with a dead PID in them are not rsaa's: kept.
+  const std::vector<std::string> unrelated = {dir.file("notes.tmp-1"), dir.file(".backup.tmp-" + pid + "-01.tar"),
+                                              dir.file(".t.rsaa-tmp-" + pid + "-0x"), dir.file(".t.rsaa-tmp-" + pid)};
+  for (const auto& p : {dead, live}) test::write_text(p, "x");
+  for (const auto& p : unrelated) test::write_text(p, "x");
   write_file_atomically(dir.file("t.json"), "{}");
   EXPECT_FALSE(std::filesystem::exists(dead));
   EXPECT_TRUE(std::filesystem::exists(live));
-  EXPECT_TRUE(std::filesystem::exists(unrelated));
+  for (const auto& p : unrelated) EXPECT_TRUE(std::filesystem::exists(p)) << p;
   EXPECT_EQ(test::read_text(dir.file("t.json")), "{}");
+}
+
+// A target whose name is valid (up to 255 bytes) is written although ".NAME.rsaa-tmp-PID-N" would
+// not be: the temporary's stem is shortened.
+TEST(AtomicFiles, ATargetNameOfTheLongestLengthIsWritten) {
+  TempDir dir;
+  const std::string name = std::string(250, 'a') + ".json";
+  ASSERT_EQ(name.size(), 255u);
+  write_file_atomically(dir.file(name), "{}");
+  EXPECT_EQ(test::read_text(dir.file(name)), "{}");
+  EXPECT_EQ(files_in(dir.path()), 1u);
+  EXPECT_LE(std::filesystem::path(temporary_path_beside(dir.file(name))).filename().string().size(), 255u);
 }
 
 // kill -9 among the renames: a child replaces the first file of three and dies (_exit, no
@@ -140,7 +156,7 @@ TEST(AtomicFiles, AJournalPointingOutsideTheDirectoryIsNotFollowed) {
   test::write_text(dir.file("t.json"), "target");
   test::write_text(elsewhere.file("x"), "elsewhere");
   const auto field = [](const std::string& s) { return std::to_string(s.size()) + ":" + s; };
-  test::write_text(dir.file(".rsaa-commit.tmp-1-0.journal"), field(elsewhere.file("x")) + field(dir.file("t.json")));
+  test::write_text(dir.file(".rsaa-commit.rsaa-tmp-1-0.journal"), field(elsewhere.file("x")) + field(dir.file("t.json")));
   EXPECT_EQ(read_committed_file(dir.file("t.json")), "target");
 }
 

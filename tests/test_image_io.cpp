@@ -100,6 +100,25 @@ TEST(ImageBudget, DeclaredSizeIsCheckedBeforeDecoding) {
   }
 }
 
+// The race between the check that log4cplus's threads can start and the load of the image module
+// (another process of the user can take the room between them), made certain by a preloaded
+// library under which every thread started during the load fails: log4cplus's static
+// initialiser then calls std::terminate. The process ends with status 1 and says what failed
+// and why, not "terminate called without an active exception".
+TEST(ImageModule, ThreadsFailingWhileItLoadsEndTheProcessWithAMessage) {
+  TempDir dir;
+  Image black(4, 4);
+  write_image(dir.file("black.png"), black);
+  const test::CommandResult r = test::run_command("LD_PRELOAD=" + std::string(RSAA_THREADS_FAIL_PRELOAD) + " " +
+                                                  RSAA_BINARY + " compare " + dir.file("black.png") + " " +
+                                                  dir.file("black.png"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("rsaa: error: the process ended while loading the image module"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("log4cplus"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("ulimit"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("terminate called"), std::string::npos) << r.output;
+}
+
 TEST(BenchCsv, ThePlotReaderReadsTheBenchsOwnCsv) {
   bench::TechniqueResult r;
   r.scene = "a \"quoted\", scene";

@@ -16,6 +16,7 @@ packages=(
   libopengl-dev                         # examples/: GL through libOpenGL, not epoxy
   libassimp-dev assimp-testmodels
   libcsv-dev                            # rsaa plot: CSV with quoted fields
+  zlib1g-dev                            # rsaa_reliability: a compressed hostile model
   xvfb xauth
 )
 

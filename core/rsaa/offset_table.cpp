@@ -310,7 +310,9 @@ std::string table_json_text(const OffsetTable& table, const std::string& set_id)
     out << (i ? ", " : "") << pair_text(table.pattern.positions[i]);
   out << "],\n";
   out << "  \"mask_bit\": " << json(kMaskBitText).dump() << ",\n";
-  out << "  \"training\": " << table.training.dump() << ",\n";
+  // The command may hold file names, which are any bytes: invalid UTF-8 is written as U+FFFD
+  // rather than failing the write.
+  out << "  \"training\": " << table.training.dump(-1, ' ', false, json::error_handler_t::replace) << ",\n";
   const std::size_t n = table.offsets.size();
   out << "  \"offsets\": [\n";
   for (std::size_t m = 0; m < n; ++m)

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -89,14 +90,25 @@ std::string directory_of(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
-// The PID in a temporary's name (DIR/.STEM.tmp-PID-N.EXT), or 0.
+// What marks rsaa's temporaries: distinctive, since a dead PID in the name gets the file removed
+// (".tmp-" alone also matched users' own files, such as ".backup.tmp-2024-01.tar").
+constexpr const char* kTemporaryMarker = ".rsaa-tmp-";
+
+// The PID in a temporary's name (DIR/.STEM.rsaa-tmp-PID-N.EXT, exactly that form), or 0.
 pid_t pid_of_temporary(const std::string& name) {
-  const std::size_t at = name.find(".tmp-");
+  const std::string marker = kTemporaryMarker;
+  const std::size_t at = name.rfind(marker);
   if (name.empty() || name[0] != '.' || at == std::string::npos) return 0;
-  std::size_t digits = at + 5, end_digits = digits;
-  while (end_digits < name.size() && std::isdigit(static_cast<unsigned char>(name[end_digits]))) ++end_digits;
-  if (end_digits == digits || end_digits - digits > 9) return 0;
-  return static_cast<pid_t>(std::stol(name.substr(digits, end_digits - digits)));
+  const auto digits_from = [&](std::size_t i) {
+    std::size_t end = i;
+    while (end < name.size() && std::isdigit(static_cast<unsigned char>(name[end]))) ++end;
+    return end;
+  };
+  const std::size_t pid_begin = at + marker.size(), pid_end = digits_from(pid_begin);
+  if (pid_end == pid_begin || pid_end - pid_begin > 9 || pid_end >= name.size() || name[pid_end] != '-') return 0;
+  const std::size_t count_end = digits_from(pid_end + 1);
+  if (count_end == pid_end + 1 || (count_end < name.size() && name[count_end] != '.')) return 0;
+  return static_cast<pid_t>(std::stol(name.substr(pid_begin, pid_end - pid_begin)));
 }
 
 // Only a PID that no longer exists marks a dead run; a live one may be mid-commit.
@@ -109,7 +121,7 @@ bool is_dead(pid_t pid) { return pid > 0 && pid != ::getpid() && ::kill(pid, 0) 
 constexpr const char* kJournalStem = ".rsaa-commit";
 
 std::string journal_path(const std::string& dir) {
-  // DIR/.rsaa-commit.tmp-PID-N.journal: named by its run's PID like every temporary.
+  // DIR/.rsaa-commit.rsaa-tmp-PID-N.journal: named by its run's PID like every temporary.
   return temporary_path_beside((fs::path(dir) / (std::string(kJournalStem).substr(1) + ".journal")).string());
 }
 
@@ -165,12 +177,22 @@ bool is_journal_name(const std::string& name) {
 
 }  // namespace
 
+void check_replaceable(const std::string& target) {
+  struct stat st {};
+  if (::lstat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    throw std::runtime_error(target + ": exists and is " + kind_of(st.st_mode) + "; not replaced");
+}
+
 std::string temporary_path_beside(const std::string& target) {
   static std::atomic<unsigned> counter{0};
   const fs::path t(target);
-  return (t.parent_path() / ("." + t.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                             std::to_string(counter++) + t.extension().string()))
-      .string();
+  const std::string suffix = kTemporaryMarker + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                             t.extension().string();
+  // The stem is shortened so that the name fits in NAME_MAX (255 bytes) where the target's does:
+  // a 250-byte name is valid, the same with the suffix is not.
+  constexpr std::size_t kNameMax = 255;
+  const std::string stem = t.stem().string().substr(0, kNameMax - std::min(kNameMax, 1 + suffix.size()));
+  return (t.parent_path() / ("." + stem + suffix)).string();
 }
 
 std::size_t remove_stale_temporaries(const std::string& dir) {
@@ -202,12 +224,7 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
   for (const std::string& dir : dirs) remove_stale_temporaries(dir);
 
   // A target must be a regular file or absent: anything else could not be restored.
-  for (const auto& file : files) {
-    struct stat st {};
-    if (::lstat(file.first.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-      throw std::runtime_error(file.first + ": exists and is " + kind_of(st.st_mode) +
-                               "; not replaced");
-  }
+  for (const auto& file : files) check_replaceable(file.first);
 
   std::vector<std::string> temporaries, backups(files.size());
   const auto remove_all = [](const std::vector<std::string>& paths) {

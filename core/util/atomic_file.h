@@ -39,11 +39,17 @@ using RenameFn = std::function<bool(const std::string& from, const std::string& 
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files,
                             const RenameFn& rename);
 
-// A fresh temporary name beside `target` for this process: DIR/.STEM.tmp-PID-N.EXT (the
-// extension is kept so that format-by-extension writers still work).
+// Throws std::runtime_error naming `target` when it exists and is not a regular file (a
+// directory, a symbolic link, a device, a FIFO): outputs replace only regular files.
+void check_replaceable(const std::string& target);
+
+// A fresh temporary name beside `target` for this process: DIR/.STEM.rsaa-tmp-PID-N.EXT (the
+// extension is kept so that format-by-extension writers still work; STEM is shortened to keep
+// the name within 255 bytes).
 std::string temporary_path_beside(const std::string& target);
-// Finishes the commits of dead runs in DIR (their journals), then removes DIR/.*.tmp-PID-* files
-// whose PID is no longer running; returns how many temporaries it removed.
+// Finishes the commits of dead runs in DIR (their journals), then removes the regular files named
+// as temporaries are (DIR/.STEM.rsaa-tmp-PID-N.EXT) whose PID is no longer running; returns how
+// many temporaries it removed.
 std::size_t remove_stale_temporaries(const std::string& dir);
 
 // Checks that `path` is a regular file of at most `max_bytes` without blocking on it (FIFOs and

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <future>
@@ -114,11 +115,23 @@ int threads_that_can_start(int at_most) {
 }
 
 int fit_llvmpipe_threads_to_process_limit(int room_to_keep) {
-  if (std::getenv("LP_NUM_THREADS")) return -1;  // the user's choice
-  const int wanted = std::min(default_thread_count(), 16) + room_to_keep;
+  // The user's LP_NUM_THREADS is kept when its threads can start; more than can start would
+  // make llvmpipe wait forever (LP_NUM_THREADS=32 under ulimit -u 8 did), so it is lowered then.
+  const char* users = std::getenv("LP_NUM_THREADS");
+  int asked = std::min(default_thread_count(), 16);
+  if (users) {
+    char* end = nullptr;
+    const long value = std::strtol(users, &end, 10);
+    if (end == users || *end != '\0' || value < 0) return -1;  // llvmpipe ignores it: its default
+    asked = int(std::min<long>(value, 1024));
+  }
+  const int wanted = asked + room_to_keep;
   const int can = threads_that_can_start(wanted);
   if (can >= wanted) return -1;
   const int fitting = std::max(0, can - room_to_keep);
+  if (users)
+    std::fprintf(stderr, "rsaa: LP_NUM_THREADS=%s lowered to %d: the process limit (ulimit -u) leaves room for no more\n",
+                 users, fitting);
   ::setenv("LP_NUM_THREADS", std::to_string(fitting).c_str(), 1);
   return fitting;
 }

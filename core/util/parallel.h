@@ -20,9 +20,10 @@ int threads_that_can_start(int at_most);
 
 // Under a process limit, llvmpipe (Mesa's software GL) starts fewer rasterizer threads than it
 // counts on and then waits for the missing ones forever (Mesa 22, measured under ulimit -u 2).
-// Before a GL context is made: when fewer than its threads (one per CPU) plus `room_to_keep`
-// can start and LP_NUM_THREADS is not set, sets LP_NUM_THREADS to what fits (0: it rasterizes
-// on the calling thread). Returns the value set, or -1 when nothing was set.
+// Before a GL context is made: when fewer than its threads (one per CPU, or LP_NUM_THREADS if
+// set) plus `room_to_keep` can start, sets LP_NUM_THREADS to what fits (0: it rasterizes on the
+// calling thread; a lowered user value is reported on stderr). Returns the value set, or -1 when
+// nothing was set.
 int fit_llvmpipe_threads_to_process_limit(int room_to_keep);
 
 // Calls work(begin, end) for consecutive ranges of at most `chunk` items covering [0, count).

@@ -266,7 +266,7 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                               {"bytes_per_pixel", r.bytes_per_pixel},
                               {"pareto", r.pareto}});
   }
-  return out.dump(2) + "\n";
+  return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string results_csv(const std::vector<TechniqueResult>& results) {
@@ -298,6 +298,10 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
     o.frames = j.at("timed_frames");
     o.lights = j.value("lights", 1);
     o.orbit_frames = j.at("orbit_frames");
+    // The report prints these: a hand-edited file with -5 or 1e10 was reported as it was.
+    validate_size(o.width, o.height);
+    if (o.frames < 1 || o.frames > 1000 || o.orbit_frames < 2 || o.orbit_frames > 1000 || o.lights < 1 || o.lights > 65)
+      throw std::runtime_error("timed_frames, orbit_frames or lights outside the bench's ranges");
     std::vector<TechniqueResult> results;
     for (const auto& e : j.at("results")) {
       TechniqueResult r;

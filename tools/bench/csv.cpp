@@ -30,7 +30,9 @@ void on_record(int, void* collector) {
 }  // namespace
 
 CsvTable read_csv(const std::string& path) {
-  const std::string text = read_whole_file(path, kMaxCsvBytes, "CSV file");
+  std::string text = read_whole_file(path, kMaxCsvBytes, "CSV file");
+  // A UTF-8 byte-order mark (spreadsheets write one) is not part of the first column's name.
+  if (text.rfind("\xef\xbb\xbf", 0) == 0) text.erase(0, 3);
   csv_parser parser;
   if (csv_init(&parser, CSV_STRICT | CSV_STRICT_FINI) != 0)
     throw std::runtime_error(path + ": cannot start the CSV parser");

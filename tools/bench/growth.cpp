@@ -248,7 +248,7 @@ std::string growth_json(const GrowthOptions& o, const GrowthResults& results) {
     out["light_crossings"].push_back({{"cheaper", x.a}, {"than", x.b}, {"first_measured_lights", x.measured},
                                       {"fitted_lights", x.fitted}});
   }
-  return out.dump(2) + "\n";
+  return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 std::string growth_csv(const GrowthResults& results) {

@@ -291,6 +291,12 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
   double y_lo = 1e300, y_hi = -1e300;
   for (const auto& s : ys)
     for (double v : s) y_lo = std::min(y_lo, v), y_hi = std::max(y_hi, v);
+  // A span beyond a double (1e308 and -1e308) would put every point at NaN: nothing drawn.
+  if (!std::isfinite(x_hi - x_lo) || !std::isfinite(y_hi - y_lo)) {
+    char span[160];
+    std::snprintf(span, sizeof span, "x from %g to %g, y from %g to %g", x_lo, x_hi, y_lo, y_hi);
+    throw std::runtime_error(csv_path + ": the values span more than can be drawn (" + span + ")");
+  }
   const double y_pad = std::max(1e-9, 0.08 * (y_hi - y_lo));
   y_lo -= y_pad, y_hi += y_pad;
   if (x_hi <= x_lo) x_hi = x_lo + 1;
@@ -306,7 +312,15 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
     std::snprintf(label, sizeof label, "%.4g", y);
     text(canvas, label, {5, py(y) + 5});
   }
-  for (double x : xs) {
+  // One label per point while they fit (the trade curves), else 5 ticks: a label per row of a
+  // 2-million-row CSV took 33 s.
+  constexpr std::size_t kMostPointLabels = 20;
+  std::vector<double> x_labels = xs;
+  if (xs.size() > kMostPointLabels) {
+    x_labels.clear();
+    for (int t = 0; t <= 4; ++t) x_labels.push_back(x_lo + t * (x_hi - x_lo) / 4);
+  }
+  for (double x : x_labels) {
     char label[32];
     std::snprintf(label, sizeof label, "%.4g", log_x ? std::pow(10.0, x) : x);
     text(canvas, label, {px(x) - 15, height - bottom + 20});

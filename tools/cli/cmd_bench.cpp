@@ -27,6 +27,10 @@ struct BenchArgs {
   std::string from_json;
   bool growth = false;
   std::string lights;
+  // Which of the options --quick sets were given: those keep their value (--quick used to
+  // replace them without a word: --quick --width 99999 ran at 160x120).
+  bool width_given = false, height_given = false, frames_given = false, orbit_frames_given = false;
+  bool scenes_given = false;
 };
 
 std::vector<std::string> split(const std::string& list) {
@@ -115,10 +119,14 @@ int run_bench_command(BenchArgs a) {
   o.techniques = bench::default_techniques();
   if (a.quick) {
     o.scenes = {"builtin:default", "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"};
-    a.width = 160, a.height = 120, a.frames = 3, a.orbit_frames = 3;
+    if (!a.width_given) a.width = 160;
+    if (!a.height_given) a.height = 120;
+    if (!a.frames_given) a.frames = 3;
+    if (!a.orbit_frames_given) a.orbit_frames = 3;
   } else {
     o.scenes = bench::default_scenes();
   }
+  if (a.scenes_given && split(a.scenes).empty()) throw std::invalid_argument("--scenes: no scene named");
   if (!a.scenes.empty()) o.scenes = split(a.scenes);
   if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
   if (!a.table.empty()) {  // RSAA with the user's table, beside the built-in ones
@@ -216,7 +224,12 @@ Action add_bench_command(CLI::App& app) {
                   "with --growth a comma-separated list of N");
   cmd->add_option("--from-json", args->from_json,
                   "Report and plot a previous run's bench.json again instead of measuring");
-  return [args] { return run_bench_command(*args); };
+  return [args, cmd] {
+    args->width_given = cmd->count("--width") > 0, args->height_given = cmd->count("--height") > 0;
+    args->frames_given = cmd->count("--frames") > 0, args->orbit_frames_given = cmd->count("--orbit-frames") > 0;
+    args->scenes_given = cmd->count("--scenes") > 0;
+    return run_bench_command(*args);
+  };
 }
 
 }  // namespace rsaa::cli

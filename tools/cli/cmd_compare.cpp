@@ -42,7 +42,8 @@ int run_compare(const CompareArgs& a) {
                           {"ssim", c.ssim},
                           {"luma_error_share_percent", c.luma_error_share},
                           {"luma_threshold", a.luma_threshold}};
-    std::printf("%s\n", out.dump(2).c_str());
+    // File names are any bytes: invalid UTF-8 is printed as U+FFFD rather than failing.
+    std::printf("%s\n", out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   } else {
     std::printf("%s against %s\n  PSNR %.2f dB   SSIM %.4f   luminance error > %.4f: %.2f%% of pixels\n",
                 a.image.c_str(), a.reference.c_str(), c.psnr_db, c.ssim, a.luma_threshold,

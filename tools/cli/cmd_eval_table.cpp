@@ -131,7 +131,7 @@ int run_eval(const EvalArgs& a) {
       out["tables"].push_back(accuracy_json(a.files[i], tables[i], accuracy[i]));
     // One table: its fields at the top level too, the common case for scripts.
     if (tables.size() == 1) out.update(out["tables"][0]);
-    std::printf("%s\n", out.dump(2).c_str());
+    std::printf("%s\n", out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     return 0;
   }
   std::printf("fresh cases: %llu (seed %llu), %llu one-line, %llu two-line; "

@@ -2,6 +2,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -48,6 +49,9 @@ int refuse_unknown_command(const CLI::App& app, const std::string& word) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A write beyond the file-size limit (ulimit -f) then fails with EFBIG and is reported like a
+  // full disk, instead of SIGXFSZ ending the process in the middle of a write.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"rsaa: Resampling Anti-Aliasing (Reshetov, HPG 2012): table trainer, renderer and tools"};
   app.require_subcommand(1);
   std::map<const CLI::App*, rsaa::cli::Action> actions;

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include <OpenImageIO/imageio.h>
+#include <zlib.h>
 
 #include "core/util/atomic_file.h"
 #include "image/image_io.h"
@@ -42,12 +43,14 @@ struct Feed {
   std::function<std::string(const std::string& output)> check;
   std::uint64_t address_space = kInputAddressSpace;
   std::uint64_t max_processes = 0;
+  std::vector<std::string> environment{};  // run_limited's changes: "NAME=VALUE", or "NAME" to unset
+  std::uint64_t file_size_limit = 0;       // RLIMIT_FSIZE: writes beyond fail as on a full disk
 };
 
 Outcome judge(const Feed& f, const std::string& rsaa, std::string& detail) {
   std::vector<std::string> argv = {rsaa};
   argv.insert(argv.end(), f.args.begin(), f.args.end());
-  const RunResult r = run_limited(argv, kInputSeconds, f.address_space, f.max_processes);
+  const RunResult r = run_limited(argv, kInputSeconds, f.address_space, f.max_processes, f.environment, f.file_size_limit);
   const std::string tail = r.output.substr(0, 300);
   if (r.timed_out) return detail = "still running after 60 s", Outcome::kFailed;
   if (r.signal) return detail = "killed by signal " + std::to_string(r.signal) + ": " + tail, Outcome::kFailed;
@@ -132,6 +135,34 @@ std::string tetrahedron_obj(double scale, double offset = 0.0, const std::string
   return s + "vt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/2\nf 1/1 2/2 4/3\n";
 }
 
+// A compressed XGL model (.zgl: two bytes, then raw deflate) whose XML is `repeats` times
+// "<a/>x" inside <WORLD>: a few hundred KB that inflate to 5 bytes per repeat, which the XML
+// parser inside assimp (pugixml) turns into two 64-byte nodes, allocated with malloc: about 26
+// bytes per inflated byte that only a budget counting malloc sees.
+std::string zgl_of_empty_elements(std::uint64_t repeats) {
+  z_stream z{};
+  if (deflateInit2(&z, 9, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY) != Z_OK) throw std::runtime_error("deflateInit2 failed");
+  std::string out(2, '\0'), block;
+  for (int k = 0; k < 65536; ++k) block += "<a/>x";
+  const std::string head = "<WORLD>", tail = "</WORLD>";
+  std::vector<unsigned char> buffer(1 << 16);
+  const auto feed = [&](const std::string& text, int flush) {
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
+    z.avail_in = uInt(text.size());
+    do {
+      z.next_out = buffer.data();
+      z.avail_out = uInt(buffer.size());
+      deflate(&z, flush);
+      out.append(reinterpret_cast<const char*>(buffer.data()), buffer.size() - z.avail_out);
+    } while (z.avail_out == 0);
+  };
+  feed(head, Z_NO_FLUSH);
+  for (std::uint64_t done = 0; done < repeats; done += 65536) feed(block, Z_NO_FLUSH);
+  feed(tail, Z_FINISH);
+  deflateEnd(&z);
+  return out;
+}
+
 bool make_fifo(const std::string& path) { return ::mkfifo(path.c_str(), 0600) == 0; }
 
 // The three table files agree: GLSL and HLSL are what the JSON's table gives.
@@ -148,7 +179,7 @@ std::string table_set_consistent(const std::string& dir, const std::string& stem
 
 std::size_t temporaries_in(const std::string& dir) {
   std::size_t n = 0;
-  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".tmp-") != std::string::npos;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".rsaa-tmp-") != std::string::npos;
   return n;
 }
 
@@ -199,6 +230,13 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
                         "0 0 0 1 0 0 0 1 0</float_array></source><vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/>"
                         "</vertices><triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/><p>0 1 2</p>"
                         "</triangles></mesh></geometry></library_geometries></COLLADA>\n");
+  // A texture face referring to texture vertex 99999999: assimp 5.2's ASE importer segfaults.
+  dir.write("crash.ase", "*3DSMAX_ASCIIEXPORT 200\n*GEOMOBJECT {\n*NODE_NAME \"a\"\n*MESH {\n*MESH_NUMVERTEX 3\n*MESH_NUMFACES 1\n"
+                         "*MESH_VERTEX_LIST {\n*MESH_VERTEX 0 0 0 0\n*MESH_VERTEX 1 1 0 0\n*MESH_VERTEX 2 0 1 0\n}\n"
+                         "*MESH_FACE_LIST {\n*MESH_FACE 0: A: 0 B: 1 C: 2\n}\n*MESH_NUMTVERTEX 1\n*MESH_TVERTLIST {\n"
+                         "*MESH_TVERT 0 0 0 0\n}\n*MESH_NUMTVFACES 1\n*MESH_TFACELIST {\n*MESH_TFACE 0 0 99999999 5\n}\n}\n}\n");
+  // 16 M repeats: 80 MB of XML in a 78 KB file, about 2 GB of pugixml nodes.
+  dir.write("elements.zgl", zgl_of_empty_elements(std::uint64_t{1} << 24));
   write_float_image(f("nan.exr"), 8, 8, 3, std::numeric_limits<float>::quiet_NaN());
   write_float_image(f("inf.exr"), 8, 8, 3, std::numeric_limits<float>::infinity());
   for (const char* scale : {"1e30", "1e-30", "1"}) dir.write(std::string("scale-") + scale + ".obj", tetrahedron_obj(std::stod(scale)));
@@ -226,6 +264,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
     std::string t = read_whole_file(f("a/custom-p.json"));
     dir.write("escape.json", t.replace(t.find("\"custom-p\""), 10, "\"custom-../../x\""));
   }
+  dir.write("span.csv", "x,y\n0,1e308\n1,-1e308\n");
   dir.write("bench.csv", "scene,technique,frame_ms,psnr_db,passes_wall_ms\n"
                          "\"builtin:default\",\"rsaa 8x, sadp\",1.5,30,\"scene=1;post=0.5\"\n"
                          "\"a \"\"quoted\"\" scene\",\"noaa\",0.5,25,\"scene=0.4\"\n");
@@ -251,9 +290,26 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
                "ulimit -u", f("nproc.png"), {}};
   nproc_3.max_processes = 3;
 
+  // LP_NUM_THREADS beyond the process limit: llvmpipe waited forever for its missing threads.
+  Feed lp_threads{"LP_NUM_THREADS=32 with RLIMIT_NPROC 8 (llvmpipe waited forever)",
+                  {"render", "--scene", "builtin:edges", "--technique", "rsaa", "--width", "32", "--height", "24", "--out", f("threads/lp.png")},
+                  "ulimit -u", f("threads/lp.png"), {}};
+  lp_threads.max_processes = 8;
+  lp_threads.environment = {"LP_NUM_THREADS=32"};
+  // A file-size limit (ulimit -f 8 KiB) stands for a full disk: writes fail (EFBIG as ENOSPC).
+  const auto full_disk = [&](const std::string& label, std::vector<std::string> args, const std::string& name,
+                             const std::string& output, const std::string& dir) {
+    Feed feed{label, std::move(args), name, output, [dir](const std::string&) -> std::string {
+                return fs::exists(dir) && temporaries_in(dir) ? "temporaries left" : "";
+              }};
+    feed.file_size_limit = 8 << 10;
+    return feed;
+  };
+  fs::create_directories(f("full"));
+
   std::vector<SuiteResult> suites;
   suites.push_back(run_class(
-      "hostile 1, crashes: format strings, thread and process limits, deep nesting, broken importer scenes",
+      "hostile 1, crashes: format strings, thread and process limits, deep nesting, broken importer scenes, importer crashes",
       {
           refuse("view --screenshot 'x%n.png'", {"view", "--screenshot", "x%n.png", "--keys", "Q"}, "--screenshot"),
           refuse("view --screenshot '%s%s%s'", {"view", "--screenshot", "%s%s%s", "--keys", "Q"}, "--screenshot"),
@@ -264,13 +320,15 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           nproc_3,
           refuse("assimp's RAW/WithTexture.raw (null child nodes; PreTransformVertices segfaulted)",
                  {"render", "--scene", kModels + "/RAW/WithTexture.raw", "--out", f("raw.png")}, "WithTexture.raw", f("raw.png")),
+          refuse("ASE whose texture face refers to texture vertex 99999999 (assimp segfaulted)",
+                 {"render", "--scene", f("crash.ase"), "--out", f("crash.png")}, "crashed on it (signal 11", f("crash.png")),
           Feed{"assimp's OpenGEX/camera.ogex (lights without nodes; an assertion aborted)",
                {"render", "--scene", kModels + "/OpenGEX/camera.ogex", "--width", "32", "--height", "24", "--out", f("ogex.png")}, "", f("ogex.png"), {}},
       },
       options));
 
   suites.push_back(run_class(
-      "hostile 2, hangs: devices and FIFOs where files are read, a cut PLY header",
+      "hostile 2, hangs: devices and FIFOs where files are read, a cut PLY header, LP_NUM_THREADS beyond the process limit",
       {
           refuse("compare /dev/zero", {"compare", "/dev/zero", f("black.png")}, "/dev/zero"),
           refuse("compare a FIFO", {"compare", f("black.png"), f("fifo.png")}, "fifo.png"),
@@ -282,6 +340,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("a model whose texture is a FIFO", {"render", "--scene", f("fifo-texture.obj"), "--out", f("out-3.png")}, "fifo.png", f("out-3.png")),
           refuse("a model whose material file is a FIFO", {"render", "--scene", f("fifo-mtl.obj"), "--out", f("out-4.png")}, "fifo-mtl.mtl", f("out-4.png")),
           refuse("plot a FIFO", {"plot", f("fifo.csv"), "--x", "a", "--y", "b", "--out", f("out-5.png")}, "fifo.csv", f("out-5.png")),
+          lp_threads,
           refuse("PLY header cut inside a property list (assimp looped forever)", {"render", "--scene", f("cut.ply"), "--out", f("out-cut.png")}, "end_header", f("out-cut.png")),
           refuse("train --generic a FIFO", {"train", "--from-scene", "builtin:edges", "--generic", f("fifo.json"), "--out-dir", f("tables-fifo")}, "fifo.json"),
       },
@@ -300,17 +359,18 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("DirectX .x declaring 10^9 vertices", {"render", "--scene", f("huge.x"), "--out", f("out-9x.png")}, "huge.x", f("out-9x.png")),
           refuse("ASE declaring 10^9 vertices", {"render", "--scene", f("huge.ase"), "--out", f("out-9a.png")}, "huge.ase", f("out-9a.png")),
           refuse("Collada float_array of 10^9", {"render", "--scene", f("huge.dae"), "--out", f("out-9d.png")}, "huge.dae", f("out-9d.png")),
+          refuse("compressed XGL inflating to 16M XML elements (pugixml's malloc)", {"render", "--scene", f("elements.zgl"), "--out", f("out-9z.png")}, "more memory than its budget", f("out-9z.png")),
       },
       options));
 
   // Class 4: two trains at once into one directory, a target that cannot be replaced, and the
   // temporaries of a run killed with -9.
   {
-    SuiteResult r{"hostile 4, mixed or stray output: concurrent trains, failing replace, dead runs' temporaries, readers of a mixed or half-renamed set", 0, 0, 0, 0, {}};
+    SuiteResult r{"hostile 4, mixed or stray output: concurrent trains, failing replace, dead runs' temporaries, readers of a mixed or half-renamed set, full disk, a linked output", 0, 0, 0, 0, {}};
     const std::string shared = f("shared");
     fs::create_directories(shared);
     const pid_t dead = dead_pid();
-    const std::string stale = shared + "/.d3d4x.tmp-" + std::to_string(dead) + "-0.json";
+    const std::string stale = shared + "/.d3d4x.rsaa-tmp-" + std::to_string(dead) + "-0.json";
     std::ofstream(stale) << "half a table";
     std::vector<RunResult> runs(2);
     std::vector<std::thread> both;
@@ -382,6 +442,25 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
                      "", f("killed.png"), {}};
     d.clear();
     r.add(judge(killed_feed, options.rsaa_binary, d), killed_feed.label, d);
+
+    // A full disk (ulimit -f 8 KiB): OIIO's PNG writer reported success for a truncated file and
+    // SIGXFSZ ended rsaa mid-write, its temporary left behind.
+    for (const Feed& full : {full_disk("render a 640x480 PNG with 8 KiB of disk", {"render", "--scene", "builtin:default", "--out", f("full/r.png")},
+                                       "File too large", f("full/r.png"), f("full")),
+                             full_disk("train d3d8x with 8 KiB of disk", {"train", "--pattern", "d3d8x", "--cases", "2000", "--quiet", "--out-dir", f("full/t")},
+                                       "File too large", f("full/t/d3d8x.json"), f("full/t"))}) {
+      d.clear();
+      r.add(judge(full, options.rsaa_binary, d), full.label, d);
+    }
+    // An output that is a symbolic link (to a file outside) is not replaced.
+    std::ofstream(f("outside.txt")) << "outside";
+    fs::create_symlink(f("outside.txt"), f("link.png"));
+    Feed link = refuse("render --out a symbolic link", {"render", "--scene", "builtin:edges", "--width", "32", "--height", "24", "--out", f("link.png")}, "link.png");
+    link.check = [&](const std::string&) -> std::string {
+      return fs::is_symlink(f("link.png")) && read_whole_file(f("outside.txt")) == "outside" ? "" : "the link or its target was replaced";
+    };
+    d.clear();
+    r.add(judge(link, options.rsaa_binary, d), link.label, d);
     suites.push_back(r);
   }
 
@@ -399,7 +478,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
     return output.find("\"psnr_db\": \"inf\"") != std::string::npos ? "" : "not equal to its composite: " + output;
   };
   suites.push_back(run_class(
-      "hostile 6, silently wrong: NaN/Inf images, alpha, mixed patterns, degenerate positions, extreme scales",
+      "hostile 6, silently wrong: NaN/Inf images, alpha, mixed patterns, degenerate positions, extreme scales and cameras, unplottable spans",
       {
           refuse("all-NaN EXR against black", {"compare", f("nan.exr"), f("black.exr")}, "NaN or infinite"),
           refuse("black against all-Inf EXR", {"compare", f("black.exr"), f("inf.exr")}, "inf.exr"),
@@ -410,11 +489,14 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("model at 1e30 scale", {"render", "--scene", f("scale-1e30.obj"), "--out", f("out-10.png")}, "scale-1e30.obj", f("out-10.png")),
           refuse("model at 1e-30 scale", {"render", "--scene", f("scale-1e-30.obj"), "--out", f("out-11.png")}, "scale-1e-30.obj", f("out-11.png")),
           refuse("unit model 1e6 from the origin", {"render", "--scene", f("far-offset.obj"), "--out", f("out-12.png")}, "far-offset.obj", f("out-12.png")),
+          refuse("render --scene-scale 1e30 (only the background)", {"render", "--scene", "builtin:default", "--scene-scale", "1e30", "--out", f("out-12s.png")}, "scaled by 1e+30", f("out-12s.png")),
+          refuse("render --camera at 3e38 (only the background)", {"render", "--scene", "builtin:default", "--camera", "3e38,0,0,0,0,0", "--out", f("out-12c.png")}, "--camera", f("out-12c.png")),
+          refuse("plot of values from 1e308 to -1e308 (nothing drawn)", {"plot", f("span.csv"), "--x", "x", "--y", "y", "--out", f("out-12p.png")}, "span.csv", f("out-12p.png")),
       },
       options));
 
   suites.push_back(run_class(
-      "hostile 7, the command line: typed numbers, unknown commands, CSV, --out-dir",
+      "hostile 7, the command line: typed numbers, unknown commands, CSV, --out-dir, --quick over given options",
       {
           refuse("train --seed -1", {"train", "--pattern", "d3d4x", "--seed", "-1", "--out-dir", f("nowhere-13")}, "--seed", f("nowhere-13")),
           refuse("eval-table --seed -1", {"eval-table", table, "--seed", "-1"}, "--seed"),
@@ -424,6 +506,8 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("train --two-line-weight nan", {"train", "--pattern", "d3d4x", "--two-line-weight", "nan", "--out-dir", f("nowhere-17")}, "--two-line-weight", f("nowhere-17")),
           refuse("render --threshold -1", {"render", "--technique", "rsaa", "--threshold", "-1", "--out", f("out-18.png")}, "--threshold", f("out-18.png")),
           refuse("compare --luma-threshold nan", {"compare", f("black.png"), f("black.png"), "--luma-threshold", "nan"}, "--luma-threshold"),
+          refuse("bench --quick --width 99999 (--quick replaced it)", {"bench", "--quick", "--width", "99999", "--out-dir", f("nowhere-19")}, "99999"),
+          refuse("bench --scenes '' (meant the default scenes)", {"bench", "--scenes", "", "--out-dir", f("nowhere-20")}, "--scenes"),
           refuse("mistyped subcommand evaltable", {"evaltable", table}, "did you mean 'eval-table'"),
           refuse("mistyped subcommand rendr", {"rendr"}, "did you mean 'render'"),
           Feed{"plot a CSV with quoted fields (the bench's)", {"plot", f("bench.csv"), "--x", "frame_ms", "--y", "psnr_db", "--out", f("plot.png")}, "", f("plot.png"), {}},

@@ -40,13 +40,26 @@ std::string ScratchDir::write(const std::string& name, const std::string& bytes)
 }
 
 RunResult run_limited(const std::vector<std::string>& argv, double seconds, std::uint64_t address_space,
-                      std::uint64_t max_processes) {
+                      std::uint64_t max_processes, const std::vector<std::string>& environment,
+                      std::uint64_t file_size_limit) {
   const ScratchDir scratch;
   const std::string log = scratch.file("output");
   // Everything the child needs is made before fork: another thread may hold the malloc lock.
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  const auto name_of = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
+  std::vector<std::string> variables;
+  for (char** e = environ; *e; ++e) {
+    bool changed = false;
+    for (const std::string& change : environment) changed = changed || name_of(change) == name_of(*e);
+    if (!changed) variables.push_back(*e);
+  }
+  for (const std::string& change : environment)
+    if (change.find('=') != std::string::npos) variables.push_back(change);
+  std::vector<char*> envp;
+  for (const std::string& v : variables) envp.push_back(const_cast<char*>(v.c_str()));
+  envp.push_back(nullptr);
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error("fork failed");
@@ -57,13 +70,17 @@ RunResult run_limited(const std::vector<std::string>& argv, double seconds, std:
     ::dup2(null, 0), ::dup2(fd, 1), ::dup2(fd, 2);
     const rlimit limit{address_space, address_space};
     ::setrlimit(RLIMIT_AS, &limit);
+    if (file_size_limit > 0) {
+      const rlimit file_size{file_size_limit, file_size_limit};
+      ::setrlimit(RLIMIT_FSIZE, &file_size);
+    }
     if (max_processes > 0) {
       const rlimit processes{max_processes, max_processes};
       ::setrlimit(RLIMIT_NPROC, &processes);
       if (::getuid() == 0 && (::setgroups(0, nullptr) != 0 || ::setgid(65534) != 0 || ::setuid(65534) != 0))
         ::_exit(126);
     }
-    ::execv(args[0], args.data());
+    ::execve(args[0], args.data(), envp.data());
     ::_exit(127);
   }
   RunResult r;

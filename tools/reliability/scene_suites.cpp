@@ -80,9 +80,17 @@ SuiteResult scene_fuzz(const Options& options) {
   const std::vector<std::pair<std::string, std::string>> seeds = {
       {"obj", read_whole_file(kModels + "/OBJ/box.obj")},
       {"gltf", read_whole_file(kModels + "/glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf")},
+      // Formats whose importers crash (segfault or assert) on mutations: the import's child
+      // process must turn each crash into a refusal naming the file.
+      {"ASE", read_whole_file(kModels + "/ASE/ThreeCubesGreen.ASE")},
+      {"off", read_whole_file(kModels + "/OFF/Cube.off")},
+      {"3mf", read_whole_file(kModels + "/3MF/box.3mf")},
+      {"md5mesh", read_whole_file(kModels + "/MD5/SimpleCube.md5mesh")},
+      {"dae", read_whole_file(kModels + "/Collada/ConcavePolygon.dae")},
+      {"smd", read_whole_file(kModels + "/SMD/triangle.smd")},
   };
   // PLY is left out: assimp 5.2.4 loops forever on some truncated PLY headers (see the corpus).
-  SuiteResult r{"scene files: mutations of OBJ and glTF models", 0, 0, 0, 0, {}};
+  SuiteResult r{"scene files: mutations of OBJ, glTF, ASE, OFF, 3MF, MD5, Collada and SMD models", 0, 0, 0, 0, {}};
   for (std::uint64_t i = 0; i < options.iterations; ++i) {
     const auto& [extension, bytes] = seeds[i % seeds.size()];
     const std::string path = dir.write("mutation-" + std::to_string(i) + "." + extension, mutate(bytes, options.seed, i));

@@ -57,8 +57,11 @@ constexpr double kInputSeconds = 60.0;
 constexpr std::uint64_t kInputAddressSpace = std::uint64_t{6} << 30;
 // max_processes > 0: RLIMIT_NPROC, so that threads fail to start; root ignores that limit, so
 // a root caller's child runs as nobody (65534) then.
+// `environment`: changes to the inherited environment, "NAME=VALUE" to set, "NAME" to unset.
+// file_size_limit > 0: RLIMIT_FSIZE (ulimit -f), writes beyond it fail as on a full disk.
 RunResult run_limited(const std::vector<std::string>& argv, double seconds = kInputSeconds,
-                      std::uint64_t address_space = kInputAddressSpace, std::uint64_t max_processes = 0);
+                      std::uint64_t address_space = kInputAddressSpace, std::uint64_t max_processes = 0,
+                      const std::vector<std::string>& environment = {}, std::uint64_t file_size_limit = 0);
 
 SuiteResult table_corpus(const Options& options);
 SuiteResult table_fuzz(const Options& options);
