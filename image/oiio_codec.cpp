@@ -115,7 +115,15 @@ bool write_new_file(const std::string& file, const std::vector<unsigned char>& b
 bool write(const std::string& format_name, const std::string& file, int width, int height, bool floats,
            const void* pixels, std::string& error) {
   auto out = OIIO::ImageOutput::create(format_name);
-  if (!out) return error = "no image format for this extension", false;
+  if (!out) {
+    // OIIO says why (a plugin that could not start its threads under a process limit reads as
+    // "no format" otherwise).
+    const std::string why = OIIO::geterror();
+    return error = "OpenImageIO could not create its '" + format_name + "' writer" +
+                   (why.empty() ? " and gave no reason (its plugin could not start: a process or memory limit?)"
+                                : ": " + why),
+           false;
+  }
   OIIO::ImageSpec spec(width, height, 3, floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   if (!floats) spec.attribute("oiio:ColorSpace", "sRGB");
   // OIIO's PNG writer did not report a full disk: a truncated PNG was renamed into place. PNG,

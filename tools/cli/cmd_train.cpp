@@ -12,6 +12,7 @@
 #include "runtime/gl_context.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/scene.h"
+#include "runtime/shader_library.h"
 #include "tools/scene_training/scene_tables.h"
 #include "core/util/atomic_file.h"
 #include "tools/cli/commands.h"
@@ -34,7 +35,7 @@ struct TrainArgs {
   int threads = 0;
   bool quiet = false;
   std::string from_scene;
-  std::string generic = "tables/d3d8x.json";
+  std::string generic;  // empty: the built-in d3d8x table
   int width = 320, height = 240, views = 6;
 };
 
@@ -79,7 +80,8 @@ int run_train_from_scene(const TrainArgs& a) {
   if (!a.pattern.empty() && a.pattern != "d3d8x")
     throw std::invalid_argument("--from-scene trains d3d8x tables only (RSAA 8x masks)");
   const auto lock = claim_out_dir(a.out_dir, "rsaa train");
-  const OffsetTable generic = read_offset_table(a.generic);
+  const OffsetTable generic = a.generic.empty() ? gl::builtin_offset_table("d3d8x") : read_offset_table(a.generic);
+  const std::string generic_name = a.generic.empty() ? "the built-in d3d8x table" : a.generic;
   bench::SceneTableOptions o;
   o.scene = a.from_scene;
   o.width = a.width, o.height = a.height, o.training_views = a.views;
@@ -93,7 +95,7 @@ int run_train_from_scene(const TrainArgs& a) {
               "%d fitted (>= %d pixels), the rest from %s\n",
               a.from_scene.c_str(), o.width, o.height, o.training_views,
               static_cast<unsigned long long>(report.edge_pixels), report.masks.size(), report.masks_fitted,
-              o.min_pixels, a.generic.c_str());
+              o.min_pixels, generic_name.c_str());
   std::printf("  most frequent masks (mask: pixels): ");
   for (std::size_t i = 0; i < std::min<std::size_t>(12, report.masks.size()); ++i)
     std::printf("%s%llu: %llu", i ? ", " : "", static_cast<unsigned long long>(report.masks[i].first),
@@ -208,7 +210,7 @@ Action add_train_command(CLI::App& app) {
   cmd->add_option("--from-scene", args->from_scene,
                   "Fit a d3d8x table on this scene's own cases (builtin:NAME or a model): writes "
                   "DIR/d3d8x-NAME.*, reports the masks that occur and held-out PSNR");
-  cmd->add_option("--generic", args->generic, "--from-scene: the table for masks the scene rarely reaches")
+  cmd->add_option("--generic", args->generic, "--from-scene: the table for masks the scene rarely reaches (default: the built-in d3d8x table)")
       ->capture_default_str();
   cmd->add_option("--width", args->width, "--from-scene: render width")->capture_default_str()
       ->check(kWholeNumber);
