@@ -5,8 +5,8 @@
 // early stencil test, skip it. The other pixels get code 0 (no surface yet, as the full pre-pass
 // clears it) and stencil 1.
 //
-// Why: on Mesa llvmpipe a jittered draw's cost is mostly its fragment work (with every fragment
-// rejected by an early depth test, 8 draws of the default scene cost a quarter of the full ones).
+// Why: on Mesa llvmpipe a jittered draw's cost is mostly its fragment work (draws whose fragments
+// an early depth test rejects cost a fraction of full ones).
 // Why triangles and not surfaces: a similarity test per neighbour in this pass cost more than
 // the draws it saved (llvmpipe runs it for every pixel). The price: a feature thinner than a
 // pixel that covers no centre of the 3x3 neighbourhood is not seen (README, "Culling the
