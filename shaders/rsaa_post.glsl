@@ -83,6 +83,34 @@ vec3 rsaa_post_position(ivec2 pixel) {
                             rsaa_inverse_projection, rsaa_viewport);
 }
 
+#if defined(RSAA_SPLIT_CHECK_NEIGHBOURS) || defined(RSAA_FETCH_CHECK_NEIGHBOURS) || \
+    defined(RSAA_MULTI_SURFACE_NEIGHBOURS) || RSAA_AUTH == 1
+#define RSAA_READS_OUTSIDE_PIXELS
+// The outside pixel nearest each subsample (rsaa_neighbours[i].xy away, clamped to the image),
+// read and compared with the centre once and shared by every check below: each of them once
+// read and compared it on its own, and a driver that runs both sides of every branch for a
+// whole SIMD batch (llvmpipe) paid for all of them on every edge pixel.
+struct RsaaOutside {
+  ivec2 pixel[RSAA_SAMPLE_COUNT];
+  uvec2 normal[RSAA_SAMPLE_COUNT];     // encoded: (0, 0) is the background
+  vec3 position[RSAA_SAMPLE_COUNT];    // view space
+  // rsaa_similarity(centre, outside pixel): meaningful where both show a surface.
+  float similarity[RSAA_SAMPLE_COUNT];
+};
+
+RsaaOutside rsaa_outside_pixels(ivec2 pixel, vec3 position, vec3 normal) {
+  RsaaOutside o;
+  ivec2 last = ivec2(rsaa_viewport) - 1;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    o.pixel[i] = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
+    o.normal[i] = texelFetch(rsaa_post_centre_normal, o.pixel[i], 0).xy;
+    o.position[i] = rsaa_post_position(o.pixel[i]);
+    o.similarity[i] = rsaa_similarity(position, normal, o.position[i], rsaa_decode_normal(o.normal[i]));
+  }
+  return o;
+}
+#endif
+
 #ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
 // Split check (ours, RsaaSettings::split_check = "neighbours"). The k-means split lies above the
 // threshold (up to RSAA_SPLIT_CAP x), so a subsample that differs from the centre's surface by
@@ -90,18 +118,11 @@ vec3 rsaa_post_position(ivec2 pixel) {
 // when the outside pixel in its direction shows a surface about as different from the centre
 // (within a factor 1.5): a second surface the 1x image holds there, not a facet of the centre's
 // own curved surface beside something else (thin wires, legs). Returns the corrected mask.
-uint rsaa_split_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask) {
+uint rsaa_split_check(uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask, RsaaOutside o) {
   if (!rsaa_is_surface(centre_normal)) return mask;
-  vec3 position = rsaa_post_position(pixel);
-  vec3 normal = rsaa_decode_normal(centre_normal);
-  ivec2 last = ivec2(rsaa_viewport) - 1;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    float s = similarity[i];
-    if ((mask & (1u << i)) == 0u || !(s > rsaa_threshold)) continue;
-    ivec2 q = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
-    uvec2 q_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
-    if (!rsaa_is_surface(q_normal)) continue;
-    float t = rsaa_similarity(position, normal, rsaa_post_position(q), rsaa_decode_normal(q_normal));
+    float s = similarity[i], t = o.similarity[i];
+    if ((mask & (1u << i)) == 0u || !(s > rsaa_threshold) || !rsaa_is_surface(o.normal[i])) continue;
     if (t * 1.5 > s && t < s * 1.5) mask &= ~(1u << i);
   }
   return mask;
@@ -116,25 +137,18 @@ uint rsaa_split_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SA
 // surface for a subsample of a background pixel). When no dissimilar subsample is matched (a
 // sliver whose surface no neighbour centre shows: thin side faces, a contour line beside another
 // surface), the offset is halved. Returns the factor for the offset, 1 or 0.5.
-float rsaa_fetch_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask) {
+float rsaa_fetch_check(uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask, RsaaOutside o) {
   bool centre_is_surface = rsaa_is_surface(centre_normal);
-  vec3 position = rsaa_post_position(pixel);
-  vec3 normal = rsaa_decode_normal(centre_normal);
-  ivec2 last = ivec2(rsaa_viewport) - 1;
   bool matched = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     if ((mask & (1u << i)) != 0u) continue;
-    ivec2 q = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
-    uvec2 q_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
-    bool q_is_surface = rsaa_is_surface(q_normal);
-    float s = similarity[i];
-    if (!centre_is_surface || s >= 1.0e9 || !q_is_surface) {
-      // s is 1e9 for a subsample that sees no surface (rsaa_decode_similarity).
+    bool q_is_surface = rsaa_is_surface(o.normal[i]);
+    float s = similarity[i], t = o.similarity[i];
+    // s is 1e9 for a subsample that sees no surface (rsaa_decode_similarity).
+    if (!centre_is_surface || s >= 1.0e9 || !q_is_surface)
       matched = matched || (centre_is_surface ? s >= 1.0e9 && !q_is_surface : q_is_surface);
-      continue;
-    }
-    float t = rsaa_similarity(position, normal, rsaa_post_position(q), rsaa_decode_normal(q_normal));
-    matched = matched || (t * 3.0 > s && t < s * 3.0);
+    else
+      matched = matched || (t * 3.0 > s && t < s * 3.0);
   }
   return matched ? 1.0 : 0.5;
 }
@@ -143,15 +157,13 @@ float rsaa_fetch_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_S
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
 // Does the centre of pixel `other` (its normal and view position given) show another surface than
 // the centre of `pixel`? Background and surface differ; two surfaces compare with the pass's
-// similarity against the threshold.
-bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other, uvec2 other_normal,
-                         vec3 other_position) {
+// similarity (`similarity`, of the two, when both are surfaces) against the threshold.
+bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, ivec2 other, uvec2 other_normal, float similarity) {
   if (other == pixel) return false;
   bool a = rsaa_is_surface(normal), b = rsaa_is_surface(other_normal);
   if (a != b) return true;
   if (!a) return false;
-  return rsaa_similarity(position, rsaa_decode_normal(normal), other_position, rsaa_decode_normal(other_normal)) >
-         rsaa_threshold;
+  return similarity > rsaa_threshold;
 }
 
 // Multi-surface resolve (ours, RsaaSettings::multi_surface = "neighbours"). One bilinear fetch
@@ -161,59 +173,43 @@ bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other, 
 // its subsamples instead, a similar subsample taking the centre's colour and a dissimilar one
 // the colour of its outside pixel (the centre's when that pixel shows the centre's surface).
 // Returns false (the caller fetches as usual) for every other pixel.
-bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, out vec4 resolved) {
+bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, RsaaOutside o, out vec4 resolved) {
   resolved = colour;
   // A non-finite pixel is left to the fetch path, which keeps it (as the CPU reference).
   if (any(isnan(colour)) || any(isinf(colour))) return false;
-  ivec2 last = ivec2(rsaa_viewport) - 1;
-  // The outside pixels the dissimilar subsamples point at: bit (step.y + 1) * 3 + step.x + 1 of
-  // the 3x3 neighbourhood.
-  uint pointed = 0u;
-  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    if ((mask & (1u << i)) != 0u) continue;
-    ivec2 step = rsaa_neighbours[i].xy;
-    pointed |= 1u << uint((step.y + 1) * 3 + step.x + 1);
-  }
-  // Each of them read and compared with the centre once (a driver that runs every branch for a
-  // whole SIMD batch, as llvmpipe, pays for each fetch written, taken or not).
-  vec3 position = rsaa_post_position(pixel);
-  ivec2 q[9];
-  uvec2 q_normal[9];
-  vec3 q_position[9], q_colour[9];
-  uint differing = 0u;
-  for (int b = 0; b < 9; ++b) {
-    q[b] = clamp(pixel + ivec2(b % 3 - 1, b / 3 - 1), ivec2(0), last);
-    q_normal[b] = uvec2(0u), q_position[b] = vec3(0.0), q_colour[b] = colour.rgb;
-    if ((pointed & (1u << uint(b))) == 0u) continue;
-    q_normal[b] = texelFetch(rsaa_post_centre_normal, q[b], 0).xy;
-    q_position[b] = rsaa_post_position(q[b]);
-    vec3 outside = texelFetch(rsaa_colour, q[b], 0).rgb;
-    // As the fetch path: a NaN or infinite neighbour never spreads into this pixel.
-    if (!any(isnan(outside)) && !any(isinf(outside))) q_colour[b] = outside;
-    if (rsaa_centres_differ(pixel, centre_normal, position, q[b], q_normal[b], q_position[b]))
-      differing |= 1u << uint(b);
-  }
-  // 3+ surfaces: a second differing outside pixel that differs from the first one too.
+  // Dissimilar subsamples whose outside pixel shows another surface than the centre; the first
+  // of them (in subsample order) is the one the others are compared with.
+  uint outside = 0u;
   int first = -1;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    ivec2 step = rsaa_neighbours[i].xy;
-    int b = (step.y + 1) * 3 + step.x + 1;
-    if (first < 0 && (mask & (1u << i)) == 0u && (differing & (1u << uint(b))) != 0u) first = b;
+    bool differs = (mask & (1u << i)) == 0u &&
+                   rsaa_centres_differ(pixel, centre_normal, o.pixel[i], o.normal[i], o.similarity[i]);
+    if (differs) outside |= 1u << i;
+    if (differs && first < 0) first = i;
   }
   if (first < 0) return false;
+  ivec2 first_pixel = o.pixel[first];
+  uvec2 first_normal = o.normal[first];
+  vec3 first_position = o.position[first], first_decoded = rsaa_decode_normal(first_normal);
+  // 3+ surfaces: another such outside pixel that differs from the first one too.
   bool three = false;
-  for (int b = 0; b < 9; ++b)
-    if (b != first && (differing & (1u << uint(b))) != 0u)
-      three = three || rsaa_centres_differ(q[first], q_normal[first], q_position[first], q[b], q_normal[b], q_position[b]);
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    if ((outside & (1u << i)) == 0u || o.pixel[i] == first_pixel) continue;
+    float t = rsaa_similarity(first_position, first_decoded, o.position[i], rsaa_decode_normal(o.normal[i]));
+    three = three || rsaa_centres_differ(first_pixel, first_normal, o.pixel[i], o.normal[i], t);
+  }
   if (!three) return false;
   // The mean over the subsamples: a similar one takes the centre's colour, a dissimilar one the
   // colour of its outside pixel where that pixel shows another surface.
   vec3 sum = vec3(0.0);
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    ivec2 step = rsaa_neighbours[i].xy;
-    int b = (step.y + 1) * 3 + step.x + 1;
-    bool outside = (mask & (1u << i)) == 0u && (differing & (1u << uint(b))) != 0u;
-    sum += outside ? q_colour[b] : colour.rgb;
+    vec3 c = colour.rgb;
+    if ((outside & (1u << i)) != 0u) {
+      vec3 fetched = texelFetch(rsaa_colour, o.pixel[i], 0).rgb;
+      // As the fetch path: a NaN or infinite neighbour never spreads into this pixel.
+      if (!any(isnan(fetched)) && !any(isinf(fetched))) c = fetched;
+    }
+    sum += c;
   }
   resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
   return true;
@@ -268,30 +264,30 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   mask = rsaa_pixel_mask(pixel, similarity, centre_normal);
   vec4 colour = texelFetch(rsaa_colour, pixel, 0);
   if (mask == RSAA_ALL_SIMILAR) return colour;
-#ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
-  mask = rsaa_split_check(pixel, centre_normal, similarity, mask);
-#endif
   bool centre_is_surface = rsaa_is_surface(centre_normal);
+#ifdef RSAA_READS_OUTSIDE_PIXELS
+  RsaaOutside o = rsaa_outside_pixels(pixel, rsaa_post_position(pixel), rsaa_decode_normal(centre_normal));
+#endif
+#ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
+  mask = rsaa_split_check(centre_normal, similarity, mask, o);
+#endif
   vec2 offset;
   int representative;
   rsaa_table_entry(mask, offset, representative);
 #ifdef RSAA_FETCH_CHECK_NEIGHBOURS
-  offset *= rsaa_fetch_check(pixel, centre_normal, similarity, mask);
+  offset *= rsaa_fetch_check(centre_normal, similarity, mask, o);
 #endif
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
   vec4 resolved;
-  if (offset != vec2(0.0) && rsaa_multi_surface(pixel, centre_normal, colour, mask, resolved)) return resolved;
+  if (offset != vec2(0.0) && rsaa_multi_surface(pixel, centre_normal, colour, mask, o, resolved)) return resolved;
 #endif
 #if RSAA_AUTH == 1
   // Post-pass authentication (paper section 2.4): if the outside pixel nearest to the
   // representative dissimilar subsample differs from the centre much more than that subsample
   // does, the fetch would blend in a surface the pixel does not show: halve the offset.
-  ivec2 outside = clamp(pixel + rsaa_neighbours[representative].xy, ivec2(0), ivec2(rsaa_viewport) - 1);
-  uvec2 outside_normal = texelFetch(rsaa_post_centre_normal, outside, 0).xy;
-  if (centre_is_surface && rsaa_is_surface(outside_normal)) {
-    float to_outside = rsaa_similarity(rsaa_post_position(pixel), rsaa_decode_normal(centre_normal),
-                                       rsaa_post_position(outside), rsaa_decode_normal(outside_normal));
+  if (centre_is_surface && rsaa_is_surface(o.normal[representative])) {
+    float to_outside = o.similarity[representative];
     if (to_outside - similarity[representative] > similarity[representative]) offset *= 0.5;
   }
 #endif
