@@ -43,9 +43,11 @@ struct RsaaPass::Objects {
   gl::Program cull_program;
   gl::Framebuffer cull_target;
   gl::CachedFramebuffer resolve_target;
-  // The two-pass post-process (RsaaSettings::post "edges"): depth 0 marks the pixels to resolve.
+  // The two-pass post-process (RsaaSettings::post "edges"): the edge pass writes depth (the
+  // full-screen triangle's) only where a pixel is to be resolved, into a depth-only target.
   gl::Program edge_program;
   gl::Texture edge_depth;
+  gl::CachedFramebuffer edge_target;
 };
 
 namespace {
@@ -621,6 +623,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   }
   const bool edges = settings_.post == "edges";
   const GLuint fb = gl_->resolve_target.get(targets, {edges ? gl_->edge_depth.get() : 0u});
+  const GLuint edge_fb = edges ? gl_->edge_target.get({}, {gl_->edge_depth.get()}) : 0u;
   write_frame_uniforms(frame);
   glBindSamplers(0, kPostUnits, nullptr);  // the textures' own filtering (an engine's sampler objects are restored)
   glBindTextureUnit(kColourUnit, frame.colour);
@@ -630,19 +633,32 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   if (multisample_) glBindTextureUnit(kFirstCodeUnit, gl_->codes_ms.get());
   if (union_) glBindTextureUnit(kFirstCodeUnit + 1, gl_->codes_ms2.get());
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
-  glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glViewport(0, 0, frame.width, frame.height);
   if (edges) {
-    // Edge pass: every pixel's kept colour, depth 0 where the mask is not all-similar.
+    // Every pixel's colour as it is (and the all-similar mask): the resolve pass overwrites the
+    // edge pixels. An image copy, and an edge pass that writes depth only: on llvmpipe the edge
+    // pass that also fetched and wrote every colour cost about twice as much (README, *How cost
+    // grows*).
+    glCopyImageSubData(frame.colour, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, frame.width,
+                       frame.height, 1);
+    if (settings_.output_mask) {
+      const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);
+      glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
+    }
+    // Edge pass: depth 1 everywhere, then the full-screen triangle's depth (0.5, or 0 under
+    // glClipControl GL_ZERO_TO_ONE) where the mask is not all-similar (the others discard).
+    glBindFramebuffer(GL_FRAMEBUFFER, edge_fb);
+    const GLfloat far_depth = 1.0f;
+    glClearNamedFramebufferfv(edge_fb, GL_DEPTH, 0, &far_depth);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glUseProgram(gl_->edge_program.get());
     draw_fullscreen_triangle();
-    // Resolve pass: the full-screen triangle's depth is 0.5, or 0 under glClipControl
-    // GL_ZERO_TO_ONE (depth range [0, 1]); GL_GEQUAL passes it on depth 0 only either way.
+    // Resolve pass: GL_GEQUAL passes the triangle's depth where the edge pass wrote it only.
     glDepthFunc(GL_GEQUAL);
     glDepthMask(GL_FALSE);
   }
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glUseProgram(gl_->post_program.get());
   draw_fullscreen_triangle();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
