@@ -191,26 +191,31 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   ivec2 first_pixel = o.pixel[first];
   uvec2 first_normal = o.normal[first];
   vec3 first_position = o.position[first], first_decoded = rsaa_decode_normal(first_normal);
-  // 3+ surfaces: another such outside pixel that differs from the first one too.
+  // 3+ surfaces: another such outside pixel that differs from the first one too. A loop over
+  // the set bits, not over every subsample: a driver that runs a SIMD batch's branches both ways
+  // still stops a loop once no lane needs another turn.
   bool three = false;
-  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    if ((outside & (1u << i)) == 0u || o.pixel[i] == first_pixel) continue;
+  for (uint rest = outside & ~(1u << uint(first)); rest != 0u; rest &= rest - 1u) {
+    int i = findLSB(rest);
     float t = rsaa_similarity(first_position, first_decoded, o.position[i], rsaa_decode_normal(o.normal[i]));
     three = three || rsaa_centres_differ(first_pixel, first_normal, o.pixel[i], o.normal[i], t);
   }
   if (!three) return false;
   // The mean over the subsamples: a similar one takes the centre's colour, a dissimilar one the
   // colour of its outside pixel where that pixel shows another surface.
+  // Summed in subsample order (as the CPU reference), the outside colours fetched in a loop over
+  // the set bits.
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    vec3 c = colour.rgb;
-    if ((outside & (1u << i)) != 0u) {
-      vec3 fetched = texelFetch(rsaa_colour, o.pixel[i], 0).rgb;
-      // As the fetch path: a NaN or infinite neighbour never spreads into this pixel.
-      if (!any(isnan(fetched)) && !any(isinf(fetched))) c = fetched;
-    }
-    sum += c;
+  int next = 0;
+  for (uint rest = outside; rest != 0u; rest &= rest - 1u) {
+    int i = findLSB(rest);
+    for (; next < i; ++next) sum += colour.rgb;
+    vec3 fetched = texelFetch(rsaa_colour, o.pixel[i], 0).rgb;
+    // As the fetch path: a NaN or infinite neighbour never spreads into this pixel.
+    sum += !any(isnan(fetched)) && !any(isinf(fetched)) ? fetched : colour.rgb;
+    next = i + 1;
   }
+  for (; next < RSAA_SAMPLE_COUNT; ++next) sum += colour.rgb;
   resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
   return true;
 }
