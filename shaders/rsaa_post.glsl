@@ -221,18 +221,12 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
 }
 #endif
 
-// The pixel's similarity mask (paper section 2.2) from its subsamples' codes, with the decoded
-// similarities and the centre's normal that the resolve reads further. The all-similar mask means
-// rsaa_resolve() keeps the pixel's colour: the cheap test an edge pass runs for every pixel
-// (rsaa_post_edges.frag). Most pixels leave early: every subsample on the centre's surface (code 1
-// = similarity 0), or a background pixel whose subsamples see no surface (code 0) or its surface.
-uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out uvec2 centre_normal) {
-  uint codes[RSAA_SAMPLE_COUNT];
+// The pixel's similarity codes, subsample i in codes[i].
+void rsaa_pixel_codes(ivec2 pixel, out uint codes[RSAA_SAMPLE_COUNT]) {
 #ifndef RSAA_PREPASS_MSAA
   uvec4 code_texels[RSAA_CODE_TEXTURES];
   for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = texelFetch(rsaa_codes[k], pixel, 0);
 #endif
-  bool any_different = false, any_uncovered = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
 #if defined(RSAA_PREPASS_MSAA_UNION)
     if (i < RSAA_MS_SAMPLES) {
@@ -249,6 +243,19 @@ uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out u
 #else
     codes[i] = code_texels[i / 4][i % 4];
 #endif
+  }
+}
+
+// The pixel's similarity mask (paper section 2.2) from its subsamples' codes, with the decoded
+// similarities and the centre's normal that the resolve reads further. The all-similar mask means
+// rsaa_resolve() keeps the pixel's colour. Most pixels leave early: every subsample on the
+// centre's surface (code 1 = similarity 0), or a background pixel whose subsamples see no surface
+// (code 0) or its surface.
+uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out uvec2 centre_normal) {
+  uint codes[RSAA_SAMPLE_COUNT];
+  rsaa_pixel_codes(pixel, codes);
+  bool any_different = false, any_uncovered = false;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     any_different = any_different || codes[i] > 1u;
     any_uncovered = any_uncovered || codes[i] == 0u;
     similarity[i] = 0.0;
@@ -261,6 +268,24 @@ uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out u
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) similarity[i] = rsaa_decode_similarity(codes[i], centre_is_surface);
   float split;
   return rsaa_classify(similarity, rsaa_threshold, split);
+}
+
+// Whether rsaa_resolve() does more than keep the pixel's colour: the test the edge pass runs on
+// every pixel (rsaa_post_edges.frag). rsaa_pixel_mask() != RSAA_ALL_SIMILAR without decoding each
+// subsample or splitting: a decoded similarity grows with its code, so rsaa_classify's largest
+// similarity is that of the largest code, or a code 0's (1e9 beside a surface centre). Where the
+// split's rounding makes a mask all-similar although the largest similarity is above the
+// threshold, this says true: the resolve then keeps the colour all the same.
+bool rsaa_pixel_has_edge(ivec2 pixel) {
+  uint codes[RSAA_SAMPLE_COUNT];
+  rsaa_pixel_codes(pixel, codes);
+  uint largest = 0u, smallest = 0xffffffffu;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) largest = max(largest, codes[i]), smallest = min(smallest, codes[i]);
+  bool any_uncovered = smallest == 0u;
+  bool centre_is_surface = rsaa_is_surface(texelFetch(rsaa_post_centre_normal, pixel, 0).xy);
+  float largest_similarity = max(rsaa_decode_similarity(largest, centre_is_surface),
+                                 any_uncovered ? rsaa_decode_similarity(0u, centre_is_surface) : 0.0);
+  return (largest > 1u || (any_uncovered && centre_is_surface)) && largest_similarity > rsaa_threshold;
 }
 
 vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
