@@ -7,12 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include "runtime/fullscreen.h"
 #include "runtime/gl_context.h"
 #include "tests/gl_test.h"
 #include "runtime/render.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/scene.h"
 #include "runtime/scene_renderer.h"
+#include "runtime/shader_library.h"
 
 namespace rsaa {
 namespace {
@@ -463,6 +465,75 @@ TEST_F(RsaaPassApi, TheEdgePassGivesTheSinglePassImageAndMasks) {
       EXPECT_GT(edges, 100);  // the comparison covers resolved pixels
       EXPECT_EQ(differing_mask, 0);
       EXPECT_EQ(differing_colour, 0);
+    }
+  }
+}
+
+// The edge pass's test (rsaa_pixel_has_edge: the largest and smallest code) against the mask
+// (rsaa_pixel_mask: every subsample decoded, then split), per pixel of the same pre-pass. Too few
+// marked pixels would change the image (the test above); too many would only cost time, and the
+// two are equal but for rounding of the split, which these scenes do not reach.
+TEST_F(RsaaPassApi, TheEdgePassMarksExactlyThePixelsWhoseMaskIsNotAllSimilar) {
+  constexpr int width = 160, height = 120;
+  const std::string probe_main =
+      "layout(location = 0) out uvec2 o;\n"
+      "void main() {\n"
+      "  ivec2 pixel = ivec2(gl_FragCoord.xy);\n"
+      "  float similarity[RSAA_SAMPLE_COUNT];\n"
+      "  uvec2 centre_normal;\n"
+      "  o = uvec2(rsaa_pixel_has_edge(pixel) ? 1u : 0u,\n"
+      "            rsaa_pixel_mask(pixel, similarity, centre_normal) != RSAA_ALL_SIMILAR ? 1u : 0u);\n"
+      "}\n";
+  for (const char* scene_name : {"builtin:default", "builtin:fence", "builtin:grazing"}) {
+    const test::SceneFrame scene(scene_name, width, height);
+    RsaaSettings depth_4x, wide_codes, background_only;
+    depth_4x.pattern = "d3d4x", depth_4x.similarity = "depth";
+    wide_codes.code_bits = 16;
+    background_only.threshold = 1.5f;  // most surface edges stay below: the code-0 rule decides
+    for (const RsaaSettings& settings : {RsaaSettings{}, depth_4x, wide_codes, background_only}) {
+      RsaaPass pass(settings, width, height);
+      scene.render_subsamples(pass);
+      const int samples = pass.pattern().size();
+      const gl::Program probe = gl::make_program(
+          {{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+           {GL_FRAGMENT_SHADER, rsaa_shader_file("rsaa_post.glsl") + probe_main}},
+          rsaa_shader_defines(settings, samples, false), "edge test probe");
+      // The block's head as shaders/rsaa_uniforms.glsl lays it out: only the viewport and the
+      // threshold matter to the two functions.
+      std::vector<float> block(24 + 4 * samples, 0.0f);
+      block[16] = float(width), block[17] = float(height), block[20] = settings.threshold;
+      const gl::Buffer uniforms = [&] {
+        GLuint id = 0;
+        glCreateBuffers(1, &id);
+        glNamedBufferData(id, GLsizeiptr(block.size() * sizeof(float)), block.data(), GL_STATIC_DRAW);
+        return gl::Buffer(id);
+      }();
+      glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings.uniform_binding), uniforms.get());
+      const RsaaFrame frame = scene.frame();
+      glBindTextureUnit(1, frame.centre_normal);
+      const std::vector<GlName> codes = pass.code_textures();
+      for (std::size_t k = 0; k < codes.size(); ++k) glBindTextureUnit(GLuint(4 + k), codes[k]);
+      const gl::Texture result = gl::make_texture_2d(GL_RG32UI, width, height);
+      const gl::Framebuffer target = gl::make_framebuffer({{result.get()}});
+      glBindFramebuffer(GL_FRAMEBUFFER, target.get());
+      glViewport(0, 0, width, height);
+      glUseProgram(probe.get());
+      draw_fullscreen_triangle();
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      std::vector<std::uint32_t> pairs(std::size_t(width) * height * 2);
+      glGetTextureImage(result.get(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(pairs.size() * 4), pairs.data());
+      gl::check("edge test probe");
+      int edges = 0, missed = 0, extra = 0;
+      for (std::size_t p = 0; p < pairs.size(); p += 2) {
+        edges += pairs[p + 1] != 0;
+        missed += pairs[p] == 0 && pairs[p + 1] != 0;
+        extra += pairs[p] != 0 && pairs[p + 1] == 0;
+      }
+      SCOPED_TRACE(std::string(scene_name) + " " + pass.pattern().name + " " + settings.similarity + " " +
+                   std::to_string(settings.code_bits) + "-bit codes, threshold " + std::to_string(settings.threshold));
+      EXPECT_GT(edges, 50);
+      EXPECT_EQ(missed, 0);
+      EXPECT_EQ(extra, 0);
     }
   }
 }
