@@ -10,13 +10,16 @@
 // reads two steps a gather, one side an iteration (a loop costs every pixel at least one pass).
 // The colour is read twice, by texelFetch: the pixel and its neighbour across the edge, blended
 // as the bilinear fetch between them would.
+//
+// Behind an edge pass (fxaa_edges.frag): it runs only where the local contrast may change the
+// pixel; the kept pixels are the colour image copied as it is.
+#include "fxaa_edge.glsl"
+
 uniform sampler2D u_colour;  // linear RGBA16F, clamp to edge
 uniform sampler2D u_luma;    // fxaa_luma of u_colour, R16F, clamp to edge
 uniform vec2 u_viewport;
 layout(location = 0) out vec4 o_colour;
 
-const float kEdgeThreshold = 0.125;     // local contrast relative to the brightest neighbour
-const float kEdgeThresholdMin = 0.0312; // ignore contrast below this (dark areas)
 const float kSubpixel = 0.75;           // strength of the sub-pixel softening
 const float kReach = 17.0;              // pixels walked each way at most
 
@@ -32,10 +35,10 @@ void main() {
   float se = textureGather(u_luma, corner + vec2(texel.x, 0.0), 0).z;          // m, e, se, s
   float m = lower_left.y, w = lower_left.x, s = lower_left.z, sw = lower_left.w;
   float n = upper_right.x, ne = upper_right.y, e = upper_right.z;
-  float hi = max(max(max(n, s), max(e, w)), m), lo = min(min(min(n, s), min(e, w)), m);
-  float contrast = hi - lo;
-  // Low local contrast: the pixel is kept (offset 0 below; on llvmpipe a branch saves nothing).
-  bool keep = contrast < max(kEdgeThresholdMin, hi * kEdgeThreshold);
+  // Low local contrast: the pixel is kept (offset 0 below; the edge pass leaves such pixels out,
+  // but a pixel of a SIMD batch that has others to do still runs).
+  bool keep;
+  float contrast = fxaa_contrast(m, n, s, e, w, keep);
   // Sub-pixel aliasing: how far the centre stands out from its neighbourhood average.
   float average = (2.0 * (n + s + e + w) + ne + nw + se + sw) / 12.0;
   float subpixel = clamp(abs(average - m) / contrast, 0.0, 1.0);

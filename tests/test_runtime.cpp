@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <set>
 
@@ -333,6 +334,31 @@ TEST_F(Runtime, FxaaChangesOnlyPixelsAtLumaEdges) {
     EXPECT_GT(flat, kWidth * kHeight / 2) << scene;
     EXPECT_GT(changed, 100) << scene;
     EXPECT_GT(psnr(fxaa, reference), psnr(plain, reference) + 1.5) << scene;
+  }
+}
+
+// The FXAA-style pass behind its edge pass (the colour copied, fxaa.frag only where the local
+// contrast may change a pixel) gives the image of fxaa.frag run on every pixel, bit for bit.
+TEST_F(Runtime, FxaaBehindItsEdgePassGivesTheFullPassImage) {
+  for (const char* name : {"builtin:edges", "builtin:default", "builtin:fence", "builtin:grazing"}) {
+    const Scene scene = load_scene(name);
+    const GpuScene gpu(scene);
+    const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+    std::vector<Image> images;
+    for (bool edge_pass : {true, false}) {
+      make_fxaa(kWidth, kHeight, edge_pass)->render(gpu, view, output.get());
+      images.push_back(read_back_image(output.get(), kWidth, kHeight));
+    }
+    const Image plain = render(name, technique_options("noaa"));
+    int differing = 0, changed = 0;
+    for (std::size_t p = 0; p < images[0].pixels.size(); ++p) {
+      const Rgb a = images[0].pixels[p], b = images[1].pixels[p], c = plain.pixels[p];
+      differing += std::memcmp(&a, &b, sizeof a) != 0;
+      changed += a.r != c.r || a.g != c.g || a.b != c.b;
+    }
+    EXPECT_GT(changed, 100) << name;  // the comparison covers pixels FXAA changes
+    EXPECT_EQ(differing, 0) << name;
   }
 }
 

@@ -28,7 +28,9 @@ inline std::string coverage_technique_label(const TechniqueOptions& o) {
 }
 
 std::unique_ptr<Technique> make_noaa(int width, int height);
-std::unique_ptr<Technique> make_fxaa(int width, int height);
+// edge_pass false: fxaa.frag on every pixel, without the edge pass in front (the tests' check
+// that the edge pass leaves out no pixel FXAA changes).
+std::unique_ptr<Technique> make_fxaa(int width, int height, bool edge_pass = true);
 // Draws at 2W x 2H into its own RGBA16F target, then downsamples with kernel 1, 2 or 3.
 std::unique_ptr<Technique> make_filtered_ssaa(int kernel, int width, int height);
 // Coverage-based techniques on the shared per-pixel fragment lists (runtime/coverage_lists.h).
