@@ -19,10 +19,13 @@
 //                            similar turns dissimilar when its outside pixel shows a like surface
 //   RSAA_FETCH_CHECK_NEIGHBOURS  (optional) a pixel none of whose dissimilar subsamples finds a like
 //                            surface in its outside pixel fetches with half the offset
+//   RSAA_MATERIAL_EDGES      (optional) the centre primitive target (RG32UI, the material in .y)
+//                            at unit RSAA_POST_FIRST_UNIT + 6: two centres of different materials
+//                            compare as maximally different, as the pre-pass codes them
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
-//                            table, then the code textures
+//                            table, then the code textures (two units), centre primitive
 //   RSAA_UNIFORM_BINDING     (13) the uniform block (rsaa_uniforms.glsl)
 //
 // The table texture (RGBA32F, min(masks, 256) x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
@@ -83,6 +86,21 @@ vec3 rsaa_post_position(ivec2 pixel) {
                             rsaa_inverse_projection, rsaa_viewport);
 }
 
+#ifdef RSAA_MATERIAL_EDGES
+layout(binding = RSAA_POST_FIRST_UNIT + 6) uniform usampler2D rsaa_post_centre_primitive;  // RG32UI
+#endif
+
+// The similarity of the surfaces at the centres of pixels a and b (positions and normals given),
+// on the scale of the pre-pass codes: with material edges, two materials are as different as a
+// code can say, as the pre-pass writes them.
+float rsaa_centres_similarity(ivec2 a, vec3 a_position, vec3 a_normal, ivec2 b, vec3 b_position, vec3 b_normal) {
+#ifdef RSAA_MATERIAL_EDGES
+  if (texelFetch(rsaa_post_centre_primitive, a, 0).y != texelFetch(rsaa_post_centre_primitive, b, 0).y)
+    return rsaa_decode_similarity(RSAA_CODE_MAX, true);
+#endif
+  return rsaa_similarity(a_position, a_normal, b_position, b_normal);
+}
+
 #ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
 // Split check (ours, RsaaSettings::split_check = "neighbours"). The k-means split lies above the
 // threshold (up to RSAA_SPLIT_CAP x), so a subsample that differs from the centre's surface by
@@ -101,7 +119,7 @@ uint rsaa_split_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_SA
     ivec2 q = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
     uvec2 q_normal = texelFetch(rsaa_post_centre_normal, q, 0).xy;
     if (!rsaa_is_surface(q_normal)) continue;
-    float t = rsaa_similarity(position, normal, rsaa_post_position(q), rsaa_decode_normal(q_normal));
+    float t = rsaa_centres_similarity(pixel, position, normal, q, rsaa_post_position(q), rsaa_decode_normal(q_normal));
     if (t * 1.5 > s && t < s * 1.5) mask &= ~(1u << i);
   }
   return mask;
@@ -133,7 +151,7 @@ float rsaa_fetch_check(ivec2 pixel, uvec2 centre_normal, float similarity[RSAA_S
       matched = matched || (centre_is_surface ? s >= 1.0e9 && !q_is_surface : q_is_surface);
       continue;
     }
-    float t = rsaa_similarity(position, normal, rsaa_post_position(q), rsaa_decode_normal(q_normal));
+    float t = rsaa_centres_similarity(pixel, position, normal, q, rsaa_post_position(q), rsaa_decode_normal(q_normal));
     matched = matched || (t * 3.0 > s && t < s * 3.0);
   }
   return matched ? 1.0 : 0.5;
@@ -150,8 +168,8 @@ bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, vec3 position, ivec2 other, 
   bool a = rsaa_is_surface(normal), b = rsaa_is_surface(other_normal);
   if (a != b) return true;
   if (!a) return false;
-  return rsaa_similarity(position, rsaa_decode_normal(normal), other_position, rsaa_decode_normal(other_normal)) >
-         rsaa_threshold;
+  return rsaa_centres_similarity(pixel, position, rsaa_decode_normal(normal), other, other_position,
+                                 rsaa_decode_normal(other_normal)) > rsaa_threshold;
 }
 
 // Multi-surface resolve (ours, RsaaSettings::multi_surface = "neighbours"). One bilinear fetch
@@ -290,8 +308,8 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   ivec2 outside = clamp(pixel + rsaa_neighbours[representative].xy, ivec2(0), ivec2(rsaa_viewport) - 1);
   uvec2 outside_normal = texelFetch(rsaa_post_centre_normal, outside, 0).xy;
   if (centre_is_surface && rsaa_is_surface(outside_normal)) {
-    float to_outside = rsaa_similarity(rsaa_post_position(pixel), rsaa_decode_normal(centre_normal),
-                                       rsaa_post_position(outside), rsaa_decode_normal(outside_normal));
+    float to_outside = rsaa_centres_similarity(pixel, rsaa_post_position(pixel), rsaa_decode_normal(centre_normal),
+                                               outside, rsaa_post_position(outside), rsaa_decode_normal(outside_normal));
     if (to_outside - similarity[representative] > similarity[representative]) offset *= 0.5;
   }
 #endif

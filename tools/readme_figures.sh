@@ -68,7 +68,7 @@ if [[ $quick == 1 ]]; then
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   step "bench --growth --quick" growth.md
-  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
+  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
     --out-dir "$out/growth" >"$out/growth.md"
   papers_figures
   echo "quick figures done in $((SECONDS - started)) s; docs/ untouched" >&2
@@ -116,26 +116,26 @@ for scene in builtin:default "$engine" "$truck" /usr/share/assimp/models/OBJ/spi
   done
 done
 step "bench, RSAA against its baselines" bench-rsaa.md
-$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
+$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
   --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"
 step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)" prepass-union.md
 { for t in custom-gl4x-union d3d8x gl4x; do $rsaa eval-table tables/$t.json 2>/dev/null; done
   $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
-    --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
+    --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
     --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
 # Cost at the sizes engines run (the post-process as multiples of a copy pass) and how it grows.
 step "post-process at 1280x720" post-1280.md
 $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc" \
+  --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me" \
   --out-dir "$out/post-1280" >"$out/post-1280.md"
 step "the culled pre-pass at 1280x720" prepass-cull.md
 $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
   --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc cull" \
+  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me cull" \
   --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
 step "how cost grows: image size, triangles, lights" growth.md
 $rsaa bench --growth --out-dir "$out/growth" \
-  --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth0" \
+  --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
   >"$out/growth.md"
 for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
 step "bench" bench.md
