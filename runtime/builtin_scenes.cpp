@@ -20,6 +20,12 @@ class MeshBuilder {
   // The filter alpha of what is added next (ssaa-filtered kernel 3: 0 = soft, large kernel).
   void set_filter_alpha(float alpha) { filter_alpha_ = alpha; }
 
+  // What is added next goes into a new draw of this material (DrawRange::material). Scenes that
+  // never call it are one draw of material 0.
+  void begin_draw(std::uint32_t material) {
+    scene_.draws.push_back({static_cast<std::uint32_t>(scene_.indices.size()), 0, -1, material});
+  }
+
   void triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 albedo) {
     const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
     add({a, n, {0, 0}, albedo}, {b, n, {1, 0}, albedo}, {c, n, {0, 1}, albedo});
@@ -90,6 +96,7 @@ class MeshBuilder {
     a.filter_alpha = b.filter_alpha = c.filter_alpha = filter_alpha_;
     scene_.vertices.insert(scene_.vertices.end(), {a, b, c});
     scene_.indices.insert(scene_.indices.end(), {base, base + 1, base + 2});
+    if (!scene_.draws.empty()) scene_.draws.back().index_count += 3;
   }
   Scene& scene_;
   float filter_alpha_ = 1.0f;
@@ -237,11 +244,64 @@ Scene grazing() {
   return s;
 }
 
+Scene coplanar() {
+  // Colour edges with no geometric edge: a floor of tiles, a wall of painted bands with a window
+  // set flush, a roof of boards; each colour its own material (draw), neighbours coplanar and
+  // sharing their edges exactly. Only a material test (RsaaSettings::material_edges) sees them.
+  Scene s;
+  MeshBuilder m(s);
+  const glm::vec3 kCream{0.8f, 0.75f, 0.6f}, kBrown{0.35f, 0.2f, 0.1f}, kTile{0.55f, 0.5f, 0.45f};
+  // Floor: 8 x 8 tiles, two materials.
+  for (int colour = 0; colour < 2; ++colour) {
+    m.begin_draw(std::uint32_t(colour));
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 8; ++i)
+        if ((i + j) % 2 == colour) {
+          const float x0 = -4.0f + i, z0 = -4.0f + j;
+          m.quad({x0, 0, z0}, {x0, 0, z0 + 1}, {x0 + 1, 0, z0 + 1}, {x0 + 1, 0, z0}, colour ? kTile : kWhite);
+        }
+  }
+  // Wall, turned 20 degrees about the vertical: six bands of two materials, a window in band 2-3.
+  const glm::mat4 wall = glm::rotate(glm::translate(glm::mat4(1), {-0.5f, 0.0f, -3.0f}), glm::radians(20.0f),
+                                     glm::vec3(0, 1, 0));
+  const auto w = [&](float x, float y) { return glm::vec3(wall * glm::vec4(x, y, 0.0f, 1.0f)); };
+  const auto panel = [&](float x0, float y0, float x1, float y1, glm::vec3 albedo) {
+    m.quad(w(x0, y0), w(x1, y0), w(x1, y1), w(x0, y1), albedo);
+  };
+  for (int colour = 0; colour < 2; ++colour) {
+    m.begin_draw(2 + std::uint32_t(colour));
+    for (int band = colour; band < 6; band += 2) {
+      const float y0 = 0.5f * band, y1 = y0 + 0.5f;
+      if (band == 2 || band == 3) {  // around the window, x in [-0.6, 0.6]
+        panel(-3.0f, y0, -0.6f, y1, colour ? kCream : kRed);
+        panel(0.6f, y0, 3.0f, y1, colour ? kCream : kRed);
+      } else {
+        panel(-3.0f, y0, 3.0f, y1, colour ? kCream : kRed);
+      }
+    }
+  }
+  m.begin_draw(4);
+  panel(-0.6f, 1.0f, 0.6f, 2.0f, kBlue);
+  // Roof on the right, sloping 35 degrees towards the camera: boards of two materials.
+  const glm::mat4 roof = glm::rotate(glm::translate(glm::mat4(1), {2.2f, 1.2f, 0.3f}), glm::radians(35.0f),
+                                     glm::vec3(1, 0, 0));
+  const auto r = [&](float x, float z) { return glm::vec3(roof * glm::vec4(x, 0.0f, z, 1.0f)); };
+  for (int colour = 0; colour < 2; ++colour) {
+    m.begin_draw(5 + std::uint32_t(colour));
+    for (int board = colour; board < 10; board += 2) {
+      const float x0 = -1.5f + 0.3f * board, x1 = x0 + 0.3f;
+      m.quad(r(x0, -1.2f), r(x0, 1.2f), r(x1, 1.2f), r(x1, -1.2f), colour ? kBrown : kYellow);
+    }
+  }
+  s.camera = look({-0.5f, 3.4f, 7.0f}, {0.5f, 0.8f, -1.0f}, 45.0f, 0.5f, 40.0f);
+  return s;
+}
+
 const std::map<std::string, std::function<Scene()>>& generators() {
   static const std::map<std::string, std::function<Scene()>> g = {
       {"default", showcase}, {"fence", fence},     {"star", star},
       {"edges", edges},      {"distant", distant}, {"interpenetrating", interpenetrating},
-      {"grazing", grazing},
+      {"grazing", grazing},  {"coplanar", coplanar},
   };
   return g;
 }
@@ -266,7 +326,7 @@ Scene builtin_scene(const std::string& name) {
   }
   Scene s = it->second();
   s.name = "builtin:" + name;
-  s.draws = {{0, static_cast<std::uint32_t>(s.indices.size()), -1}};
+  if (s.draws.empty()) s.draws = {{0, static_cast<std::uint32_t>(s.indices.size()), -1}};
   return s;
 }
 

@@ -268,6 +268,7 @@ std::string format_name(GLenum format) {
     case GL_RGBA16F: return "GL_RGBA16F";
     case GL_RG16UI: return "GL_RG16UI";
     case GL_R32UI: return "GL_R32UI";
+    case GL_RG32UI: return "GL_RG32UI";
     case GL_DEPTH_COMPONENT32F: return "GL_DEPTH_COMPONENT32F";
   }
   char hex[24];

@@ -78,12 +78,14 @@ void GpuScene::draw(GLuint program) const {
   glBindVertexArray(vao_.get());
   const GLint has_texture = glGetUniformLocation(program, "u_has_texture");
   const GLint primitive_base = glGetUniformLocation(program, "u_primitive_base");
+  const GLint material = glGetUniformLocation(program, "u_material");
   const GLint texture = glGetUniformLocation(program, "u_texture");
   if (texture >= 0) glProgramUniform1i(program, texture, 0);
   for (const DrawRange& d : draws_) {
     const bool textured = d.texture >= 0 && d.texture < int(textures_.size());
     if (has_texture >= 0) glProgramUniform1i(program, has_texture, textured);
     if (primitive_base >= 0) glProgramUniform1ui(program, primitive_base, d.first_index / 3);
+    if (material >= 0) glProgramUniform1ui(program, material, d.material);
     if (textured) glBindTextureUnit(0, textures_[d.texture].get());
     glDrawElements(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(std::size_t(d.first_index) * sizeof(std::uint32_t)));

@@ -15,8 +15,8 @@ class GpuScene {
   explicit GpuScene(const Scene& scene);
 
   // Draws every triangle with `program` bound. Attribute locations: 0 position, 1 normal, 2 uv,
-  // 3 albedo, 4 filter alpha. Sets u_texture (unit 0), u_has_texture and u_primitive_base (so that primitive ids
-  // are unique across draw calls) when the program has them. Binds the point lights (uniform
+  // 3 albedo, 4 filter alpha. Sets u_texture (unit 0), u_has_texture, u_primitive_base (so that
+  // primitive ids are unique across draw calls) and u_material when the program has them. Binds the point lights (uniform
   // block binding 4) for every shading pass that follows.
   void draw(GLuint program) const;
 

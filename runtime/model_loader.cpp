@@ -358,7 +358,8 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
       scene.vertices.push_back(out);
     }
     // The material for now: with_textures turns it into the texture's index.
-    DrawRange draw{static_cast<std::uint32_t>(scene.indices.size()), 0, int(mesh->mMaterialIndex)};
+    DrawRange draw{static_cast<std::uint32_t>(scene.indices.size()), 0, int(mesh->mMaterialIndex),
+                   mesh->mMaterialIndex};
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
       const aiFace& face = mesh->mFaces[f];
       if (face.mNumIndices != 3) continue;

@@ -75,7 +75,8 @@ static_assert(offsetof(RsaaUniformHead, sample_shift) - kJitterOffset == offseto
               "the per-draw fields are one update");
 
 // The pass's post-process texture units (rsaa_post.glsl with RSAA_POST_FIRST_UNIT 0).
-constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, kFirstCodeUnit = 4;
+constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, kFirstCodeUnit = 4,
+              kPrimitiveUnit = 6;
 constexpr int kPostUnits = 8;
 
 // The table the pass uses: the settings' own, or the built-in one of the pattern named.
@@ -206,7 +207,9 @@ void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSet
                                 std::to_string(width) + "x" + std::to_string(height));
   gl::require_texture(frame.colour, GL_RGBA16F, width, height, "RsaaFrame::colour");
   gl::require_texture(frame.centre_normal, GL_RG16UI, width, height, "RsaaFrame::centre_normal");
-  gl::require_texture(frame.centre_primitive, GL_R32UI, width, height, "RsaaFrame::centre_primitive");
+  gl::require_texture(frame.centre_primitive, settings.material_edges ? GL_RG32UI : GL_R32UI, width, height,
+                      settings.material_edges ? "RsaaFrame::centre_primitive (material_edges: primitive, material)"
+                                              : "RsaaFrame::centre_primitive");
   gl::require_texture(frame.centre_depth, GL_DEPTH_COMPONENT32F, width, height,
                       "RsaaFrame::centre_depth");
   // The one bilinear fetch needs the colour filtered linearly (it is read at scale 1).
@@ -250,11 +253,11 @@ glm::ivec2 window_step(Vec2 sample) {
 
 }  // namespace
 
-RsaaTargets::RsaaTargets(int width, int height)
+RsaaTargets::RsaaTargets(int width, int height, bool material_edges)
     : width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   gl_->colour = gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR);
   gl_->normal = gl::make_texture_2d(GL_RG16UI, width, height);
-  gl_->primitive = gl::make_texture_2d(GL_R32UI, width, height);
+  gl_->primitive = gl::make_texture_2d(material_edges ? GL_RG32UI : GL_R32UI, width, height);
   gl_->depth = gl::make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
   gl_->framebuffer = gl::make_framebuffer(
       {{gl_->colour.get()}, {gl_->normal.get()}, {gl_->primitive.get()}}, {gl_->depth.get()});
@@ -347,6 +350,7 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
   if (settings.multi_surface == "neighbours") defines += "#define RSAA_MULTI_SURFACE_NEIGHBOURS\n";
   if (settings.split_check == "neighbours") defines += "#define RSAA_SPLIT_CHECK_NEIGHBOURS\n";
   if (settings.fetch_check == "neighbours") defines += "#define RSAA_FETCH_CHECK_NEIGHBOURS\n";
+  if (settings.material_edges) defines += "#define RSAA_MATERIAL_EDGES\n";
   if (settings.output_mask) defines += "#define RSAA_OUTPUT_MASK\n";
   return defines;
 }
@@ -633,6 +637,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   if (multisample_) glBindTextureUnit(kFirstCodeUnit, gl_->codes_ms.get());
   if (union_) glBindTextureUnit(kFirstCodeUnit + 1, gl_->codes_ms2.get());
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
+  if (settings_.material_edges) glBindTextureUnit(kPrimitiveUnit, frame.centre_primitive);
   glViewport(0, 0, frame.width, frame.height);
   if (edges) {
     // Every pixel's colour as it is (and the all-similar mask): the resolve pass overwrites the

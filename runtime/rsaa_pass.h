@@ -12,7 +12,10 @@
 //   colour            GL_RGBA16F (linear light), GL_LINEAR filtering, clamp to edge
 //   centre_normal     GL_RG16UI: rsaa_encode_normal(geometric normal, view space); 0 = background
 //   centre_primitive  GL_R32UI: primitive id + 1 of the triangle seen (0 = background); the
-//                     pre-pass compares it with u_primitive_base + gl_PrimitiveID + 1
+//                     pre-pass compares it with u_primitive_base + gl_PrimitiveID + 1. With
+//                     RsaaSettings::material_edges GL_RG32UI, the second channel the material of
+//                     the triangle's draw (any value the engine chooses per material; the
+//                     pre-pass compares it with u_material / its `material` argument)
 //   centre_depth      GL_DEPTH_COMPONENT32F, the depth of the same draw
 // rsaa_encode_normal() is in shaders/rsaa_common.glsl (installed in share/rsaa/shaders);
 // RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
@@ -34,6 +37,7 @@
 //   vertex stage    gl_Position = rsaa_jitter(clip_position);
 //   fragment stage  layout(location = 0) out uvec4 o_code;
 //                   o_code = rsaa_prepass_code(view_position, view_face_normal, primitive);
+//                   (with material_edges: rsaa_prepass_code(..., primitive, material))
 // (shaders/rsaa_prepass.glsl documents them; rsaa_face_normal(view_position) gives the face
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
 // frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample;
@@ -59,6 +63,8 @@
 //                                   on the pixel centre
 //   u_primitive_base (uint)       first primitive id of this draw call as written into
 //                                 centre_primitive (0 for one draw per frame; default 0)
+//   u_material (uint)             with material_edges: the draw's material as written into
+//                                 centre_primitive's second channel (default 0)
 //
 // The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling
 // and rasterizer discard off, filled polygons, colour mask: the subsample's channel (jittered) or
@@ -127,6 +133,14 @@ struct RsaaSettings {
   // do not show what the subsamples saw (one neighbour read per dissimilar subsample). Raises the
   // default scene 39.88 -> 40.04 dB and the fence 33.65 -> 33.82 (README, "The fetch check").
   std::string fetch_check = "neighbours";
+  // Ours: colour edges between coplanar parts of different materials (a painted band on a wall,
+  // a window in its frame, a decal), which no geometric similarity sees. false: the subsamples
+  // compare geometry only (the paper). true: the engine writes each draw's material into
+  // centre_primitive's second channel (GL_RG32UI) and passes it to the pre-pass; a subsample on
+  // another material than the centre's is maximally different. Off here so that an engine's
+  // frame contract does not change under it; the renderer (`rsaa render`), whose scenes carry
+  // materials, turns it on by default (it wins on every scene measured, README "Material edges").
+  bool material_edges = false;
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver); "msaa"
   // draws once into a multisample target with per-sample shading, which needs the driver's
@@ -182,7 +196,8 @@ struct RsaaFrame {
 // The four 1x targets above, allocated, for an engine that has none of its own.
 class RsaaTargets {
  public:
-  RsaaTargets(int width, int height);
+  // material_edges: the primitive target is GL_RG32UI (RsaaSettings::material_edges).
+  RsaaTargets(int width, int height, bool material_edges = false);
   ~RsaaTargets();
   RsaaTargets(RsaaTargets&&) noexcept;
   RsaaTargets& operator=(RsaaTargets&&) noexcept;
@@ -190,10 +205,12 @@ class RsaaTargets {
   // Colour to `background` (linear RGB), normal and primitive to 0 (background), depth to
   // `far_depth` (0 for reverse Z).
   void clear(const float background[3], float far_depth = 1.0f) const;
-  // Binds the framebuffer to GL_FRAMEBUFFER: colour at location 0, normal 1, primitive 2, depth.
+  // Binds the framebuffer to GL_FRAMEBUFFER: colour at location 0, normal 1, primitive (and
+  // material) 2, depth.
   void bind() const;
   RsaaFrame frame(const glm::mat4& inverse_projection) const;
   static constexpr double kBytesPerPixel = 8 + 4 + 4 + 4;
+  static double bytes_per_pixel(bool material_edges) { return kBytesPerPixel + (material_edges ? 4 : 0); }
   GlName colour() const;
 
  private:

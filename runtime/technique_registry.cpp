@@ -39,8 +39,8 @@ std::vector<TechniqueOptions> rsaa_variants() {
         o.split_cap = 0.0;  // the paper's split and resolve
         o.multi_surface = "fetch";
         o.split_check = "off";
-  o.fetch_check = "off";
         o.fetch_check = "off";
+        o.material_edges = "off";
         list.push_back(o);
       }
   return list;
@@ -57,6 +57,7 @@ TechniqueOptions rsaa_default_without_extensions() {
   o.multi_surface = "fetch";
   o.split_check = "off";
   o.fetch_check = "off";
+  o.material_edges = "off";
   return o;
 }
 

@@ -19,10 +19,13 @@
 //                            similar turns dissimilar when its outside pixel shows a like surface
 //   RSAA_FETCH_CHECK_NEIGHBOURS  (optional) a pixel none of whose dissimilar subsamples finds a like
 //                            surface in its outside pixel fetches with half the offset
+//   RSAA_MATERIAL_EDGES      (optional) the centre primitive target (RG32UI, the material in .y)
+//                            at unit RSAA_POST_FIRST_UNIT + 6: two centres of different materials
+//                            compare as maximally different, as the pre-pass codes them
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
-//                            table, then the code textures
+//                            table, then the code textures (two units), centre primitive
 //   RSAA_UNIFORM_BINDING     (13) the uniform block (rsaa_uniforms.glsl)
 //
 // The table texture (RGBA32F, min(masks, 256) x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
@@ -83,6 +86,21 @@ vec3 rsaa_post_position(ivec2 pixel) {
                             rsaa_inverse_projection, rsaa_viewport);
 }
 
+#ifdef RSAA_MATERIAL_EDGES
+layout(binding = RSAA_POST_FIRST_UNIT + 6) uniform usampler2D rsaa_post_centre_primitive;  // RG32UI
+#endif
+
+// The similarity of the surfaces at the centres of pixels a and b (positions and normals given),
+// on the scale of the pre-pass codes: with material edges, two materials are as different as a
+// code can say, as the pre-pass writes them.
+float rsaa_centres_similarity(ivec2 a, vec3 a_position, vec3 a_normal, ivec2 b, vec3 b_position, vec3 b_normal) {
+#ifdef RSAA_MATERIAL_EDGES
+  if (texelFetch(rsaa_post_centre_primitive, a, 0).y != texelFetch(rsaa_post_centre_primitive, b, 0).y)
+    return rsaa_decode_similarity(RSAA_CODE_MAX, true);
+#endif
+  return rsaa_similarity(a_position, a_normal, b_position, b_normal);
+}
+
 #if defined(RSAA_SPLIT_CHECK_NEIGHBOURS) || defined(RSAA_FETCH_CHECK_NEIGHBOURS) || \
     defined(RSAA_MULTI_SURFACE_NEIGHBOURS) || RSAA_AUTH == 1
 #define RSAA_READS_OUTSIDE_PIXELS
@@ -94,7 +112,7 @@ struct RsaaOutside {
   ivec2 pixel[RSAA_SAMPLE_COUNT];
   uvec2 normal[RSAA_SAMPLE_COUNT];     // encoded: (0, 0) is the background
   vec3 position[RSAA_SAMPLE_COUNT];    // view space
-  // rsaa_similarity(centre, outside pixel): meaningful where both show a surface.
+  // rsaa_centres_similarity(centre, outside pixel): meaningful where both show a surface.
   float similarity[RSAA_SAMPLE_COUNT];
 };
 
@@ -105,7 +123,8 @@ RsaaOutside rsaa_outside_pixels(ivec2 pixel, vec3 position, vec3 normal) {
     o.pixel[i] = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
     o.normal[i] = texelFetch(rsaa_post_centre_normal, o.pixel[i], 0).xy;
     o.position[i] = rsaa_post_position(o.pixel[i]);
-    o.similarity[i] = rsaa_similarity(position, normal, o.position[i], rsaa_decode_normal(o.normal[i]));
+    o.similarity[i] = rsaa_centres_similarity(pixel, position, normal, o.pixel[i], o.position[i],
+                                              rsaa_decode_normal(o.normal[i]));
   }
   return o;
 }
@@ -197,7 +216,8 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   bool three = false;
   for (uint rest = outside & ~(1u << uint(first)); rest != 0u; rest &= rest - 1u) {
     int i = findLSB(rest);
-    float t = rsaa_similarity(first_position, first_decoded, o.position[i], rsaa_decode_normal(o.normal[i]));
+    float t = rsaa_centres_similarity(first_pixel, first_position, first_decoded, o.pixel[i], o.position[i],
+                                     rsaa_decode_normal(o.normal[i]));
     three = three || rsaa_centres_differ(first_pixel, first_normal, o.pixel[i], o.normal[i], t);
   }
   if (!three) return false;

@@ -12,11 +12,12 @@
 //   RSAA_CODE_BITS         8, 16 or 32: bits of a stored similarity code
 //   RSAA_SIMILARITY_DEPTH / RSAA_SIMILARITY_SADP_PLANE   (optional) as in rsaa_common.glsl
 //   RSAA_SPLIT_CAP, RSAA_MULTI_SURFACE_NEIGHBOURS, RSAA_SPLIT_CHECK_NEIGHBOURS,
-//   RSAA_FETCH_CHECK_NEIGHBOURS  (optional) as in rsaa_post.glsl
+//   RSAA_FETCH_CHECK_NEIGHBOURS, RSAA_MATERIAL_EDGES  (optional) as in rsaa_post.glsl
 // Resources (registers overridable by defining RSAA_REGISTER_*):
 //   t0 colour (linear), t1 centre normal (uint2: rsaa_encode_normal, 0 = background), t2 centre
 //   depth (0 near .. 1 far), t3.. the codes: subsample i in channel i % 4 of texture i / 4, as
-//   rsaa_prepass.glsl writes them; s0 a linear clamp-to-edge sampler; b0 the constants below,
+//   rsaa_prepass.glsl writes them; with RSAA_MATERIAL_EDGES t5 the centre primitive (uint2: the
+//   material in .y); s0 a linear clamp-to-edge sampler; b0 the constants below,
 //   with rsaa_inverse_projection such that mul(rsaa_inverse_projection, ndc) is view space
 //   (ndc.y up, ndc.z = depth).
 #ifndef RSAA_POST_HLSL
@@ -49,6 +50,9 @@
 #ifndef RSAA_REGISTER_CODES
 #define RSAA_REGISTER_CODES t3
 #endif
+#ifndef RSAA_REGISTER_MATERIAL
+#define RSAA_REGISTER_MATERIAL t5
+#endif
 #ifndef RSAA_REGISTER_SAMPLER
 #define RSAA_REGISTER_SAMPLER s0
 #endif
@@ -60,6 +64,9 @@ Texture2D<float4> rsaa_colour : register(RSAA_REGISTER_COLOUR);
 Texture2D<uint2> rsaa_centre_normal : register(RSAA_REGISTER_NORMAL);
 Texture2D<float> rsaa_centre_depth : register(RSAA_REGISTER_DEPTH);
 Texture2D<uint4> rsaa_codes[RSAA_CODE_TEXTURES] : register(RSAA_REGISTER_CODES);
+#ifdef RSAA_MATERIAL_EDGES
+Texture2D<uint2> rsaa_centre_primitive : register(RSAA_REGISTER_MATERIAL);
+#endif
 SamplerState rsaa_linear_clamp : register(RSAA_REGISTER_SAMPLER);
 
 cbuffer RsaaConstants : register(RSAA_REGISTER_CONSTANTS) {
@@ -124,8 +131,10 @@ float RsaaSimilarity(float3 p1, float3 n1, float3 p2, float3 n2) {
 
 #if RSAA_CODE_BITS == 32
 static const float RSAA_CODE_SCALE = 1073741824.0;  // 2^30
+static const uint RSAA_CODE_MAX = 0xffffffffu;
 #else
 static const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
+static const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
 #endif
 
 float RsaaDecodeSimilarity(uint code, bool centre_is_surface) {
@@ -136,6 +145,16 @@ float RsaaDecodeSimilarity(uint code, bool centre_is_surface) {
 #else
   return stored;
 #endif
+}
+
+// rsaa_post.glsl's rsaa_centres_similarity: the similarity of the surfaces at the centres of
+// pixels a and b; with material edges, two materials compare as the largest code.
+float RsaaCentresSimilarity(int2 a, float3 a_position, float3 a_normal, int2 b, float3 b_position, float3 b_normal) {
+#ifdef RSAA_MATERIAL_EDGES
+  if (rsaa_centre_primitive.Load(int3(a, 0)).y != rsaa_centre_primitive.Load(int3(b, 0)).y)
+    return RsaaDecodeSimilarity(RSAA_CODE_MAX, true);
+#endif
+  return RsaaSimilarity(a_position, a_normal, b_position, b_normal);
 }
 
 // The step from a pixel to the outside pixel nearest a subsample (core's outside_pixel_towards):
@@ -155,8 +174,8 @@ bool RsaaSplitCheckDissimilar(int2 pixel, uint2 centre_normal, int k, float s) {
   int2 q = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[k]), int2(0, 0), int2(rsaa_viewport) - 1);
   uint2 q_normal = rsaa_centre_normal.Load(int3(q, 0));
   if (!RsaaIsSurface(q_normal)) return false;
-  float t = RsaaSimilarity(RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal), RsaaViewPosition(q),
-                           RsaaDecodeNormal(q_normal));
+  float t = RsaaCentresSimilarity(pixel, RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal), q,
+                                  RsaaViewPosition(q), RsaaDecodeNormal(q_normal));
   return t * 1.5 > s && t < s * 1.5;
 }
 #endif
@@ -179,7 +198,7 @@ float RsaaFetchCheck(int2 pixel, uint2 centre_normal, float similarity[RSAA_SAMP
       matched = matched || (centre_is_surface ? (s >= 1.0e9 && !q_is_surface) : q_is_surface);
       continue;
     }
-    float t = RsaaSimilarity(position, normal, RsaaViewPosition(q), RsaaDecodeNormal(q_normal));
+    float t = RsaaCentresSimilarity(pixel, position, normal, q, RsaaViewPosition(q), RsaaDecodeNormal(q_normal));
     matched = matched || (t * 3.0 > s && t < s * 3.0);
   }
   return matched ? 1.0 : 0.5;
@@ -194,8 +213,8 @@ bool RsaaCentreDiffers(int2 pixel, uint2 normal, float3 position, int2 other) {
   bool a = RsaaIsSurface(normal), b = RsaaIsSurface(other_normal);
   if (a != b) return true;
   if (!a) return false;
-  return RsaaSimilarity(position, RsaaDecodeNormal(normal), RsaaViewPosition(other), RsaaDecodeNormal(other_normal)) >
-         rsaa_threshold;
+  return RsaaCentresSimilarity(pixel, position, RsaaDecodeNormal(normal), other, RsaaViewPosition(other),
+                               RsaaDecodeNormal(other_normal)) > rsaa_threshold;
 }
 
 bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask, out float4 resolved) {
@@ -299,8 +318,8 @@ float4 RsaaResolve(int2 pixel) {
                        int2(rsaa_viewport) - 1);
   uint2 outside_normal = rsaa_centre_normal.Load(int3(outside, 0));
   if (centre_is_surface && RsaaIsSurface(outside_normal)) {
-    float to_outside = RsaaSimilarity(RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal),
-                                      RsaaViewPosition(outside), RsaaDecodeNormal(outside_normal));
+    float to_outside = RsaaCentresSimilarity(pixel, RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal), outside,
+                                             RsaaViewPosition(outside), RsaaDecodeNormal(outside_normal));
     if (to_outside - similarity[representative] > similarity[representative]) offset *= 0.5;
   }
 #endif

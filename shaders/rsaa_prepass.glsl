@@ -18,6 +18,9 @@
 // Defines expected before inclusion (RsaaPass::prepass_glsl() writes them for a pass):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (0, 1, 2), RSAA_CODE_BITS, the similarity (rsaa_common.glsl)
 //   RSAA_PREPASS_MSAA          (optional) the multisample pre-pass
+//   RSAA_MATERIAL_EDGES        (optional) material edges: the centre primitive target is RG32UI
+//                              with the material in .y, and the fragment stage calls
+//                              rsaa_prepass_code(view_position, view_face_normal, primitive, material)
 //   RSAA_PREPASS_FIRST_UNIT    (13) the first of three texture units: centre normal, centre
 //                              primitive, centre depth
 //   RSAA_UNIFORM_BINDING       (13) the uniform block (rsaa_uniforms.glsl)
@@ -41,7 +44,7 @@ vec4 rsaa_jitter(vec4 clip_position) {
 
 #if RSAA_INCLUDE_FS
 layout(binding = RSAA_PREPASS_FIRST_UNIT) uniform usampler2D rsaa_centre_normal;         // RG16UI
-layout(binding = RSAA_PREPASS_FIRST_UNIT + 1) uniform usampler2D rsaa_centre_primitive;  // R32UI
+layout(binding = RSAA_PREPASS_FIRST_UNIT + 1) uniform usampler2D rsaa_centre_primitive;  // R32UI (RG32UI)
 layout(binding = RSAA_PREPASS_FIRST_UNIT + 2) uniform sampler2D rsaa_centre_depth;       // depth
 
 // The geometric normal of the triangle being drawn, from the derivatives of the view-space
@@ -63,7 +66,15 @@ vec3 rsaa_centre_position(ivec2 pixel) {
 // is the value the engine wrote into the centre primitive target for this triangle (id + 1): when
 // equal, the subsample is on the centre's triangle and the test is skipped; 0 never skips it.
 // All four channels carry the code: the pass masks the ones of other subsamples.
+// With RSAA_MATERIAL_EDGES `material` is the value the engine wrote into the centre primitive
+// target's second channel for this draw: a subsample on another material than the centre's is
+// maximally different, so that colour edges between coplanar parts (a painted band on a wall, a
+// decal, a window in its frame), which no geometric similarity sees, are resampled.
+#ifdef RSAA_MATERIAL_EDGES
+uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive, uint material) {
+#else
 uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive) {
+#endif
 #ifdef RSAA_PREPASS_MSAA
   // The point this sample sees (window space) and the pixel that contains it: the sample's own
   // pixel, but for the shifted second draw of a union pattern.
@@ -77,11 +88,14 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   int subsample = rsaa_subsample;
 #endif
-  uint centre_primitive = texelFetch(rsaa_centre_primitive, pixel, 0).x;
-  if (primitive != 0u && centre_primitive == primitive) return uvec4(1u);  // decodes to 0
+  uvec2 centre_primitive = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+  if (primitive != 0u && centre_primitive.x == primitive) return uvec4(1u);  // decodes to 0
   uvec2 centre_normal = texelFetch(rsaa_centre_normal, pixel, 0).xy;
   // A surface subsample in a background pixel: different.
   if (!rsaa_is_surface(centre_normal)) return uvec4(RSAA_CODE_MAX);
+#ifdef RSAA_MATERIAL_EDGES
+  if (centre_primitive.y != material) return uvec4(RSAA_CODE_MAX);
+#endif
   float similarity = rsaa_similarity(view_position, view_face_normal, rsaa_centre_position(pixel),
                                      rsaa_decode_normal(centre_normal));
 #if RSAA_AUTH == 2

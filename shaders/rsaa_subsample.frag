@@ -14,9 +14,15 @@ in FragmentData {
 } f_in;
 
 uniform uint u_primitive_base;  // first primitive id of this draw in the centre primitive target
+uniform uint u_material;        // this draw's material, as the G-buffer pass wrote it
 
 layout(location = 0) out uvec4 o_code;
 
 void main() {
-  o_code = rsaa_prepass_code(f_in.view_position, f_in.face_normal, u_primitive_base + uint(gl_PrimitiveID) + 1u);
+  uint primitive = u_primitive_base + uint(gl_PrimitiveID) + 1u;
+#ifdef RSAA_MATERIAL_EDGES
+  o_code = rsaa_prepass_code(f_in.view_position, f_in.face_normal, primitive, u_material);
+#else
+  o_code = rsaa_prepass_code(f_in.view_position, f_in.face_normal, primitive);
+#endif
 }

@@ -18,6 +18,7 @@ in FragmentData {
 uniform sampler2D u_texture;
 uniform bool u_has_texture;
 uniform uint u_primitive_base;
+uniform uint u_material;  // the draw's material (Scene::draws), for RSAA's material edges
 
 // The interpolated shading normal (the face's where a model's normals are broken), unit.
 vec3 scene_shading_normal() {

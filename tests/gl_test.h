@@ -40,11 +40,11 @@ inline RsaaSettings paper_resolve(RsaaSettings settings = {}) {
 
 // A scene at its own camera drawn into the 1x targets RSAA reads (needs a current context).
 struct SceneFrame {
-  SceneFrame(const std::string& scene_name, int width, int height)
+  SceneFrame(const std::string& scene_name, int width, int height, bool material_edges = false)
       : scene(load_scene(scene_name)),
         gpu(scene),
         view(make_view(choose_camera(scene, std::nullopt), width, height)),
-        targets(width, height) {
+        targets(width, height, material_edges) {
     renderer.draw_gbuffer(gpu, view, targets);
   }
   RsaaFrame frame() const { return targets.frame(view.inverse_projection()); }

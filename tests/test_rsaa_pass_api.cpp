@@ -57,6 +57,20 @@ TEST_F(RsaaPassApi, AMissingOrWrongFrameTextureIsAnErrorNamingTheField) {
   const gl::Texture small = gl::make_texture_2d(GL_RGBA16F, kWidth / 2, kHeight);
   EXPECT_NE(invalid_argument_of([&] { pass.resolve(good, small.get()); }).find("resolve output"),
             std::string::npos);
+  // Material edges need the primitive target with its material channel, and only with them.
+  RsaaSettings material_settings;
+  material_settings.material_edges = true;
+  RsaaPass material_pass(material_settings, kWidth, kHeight);
+  const std::string no_material = invalid_argument_of([&] { material_pass.render_subsamples(good, draw_nothing); });
+  EXPECT_NE(no_material.find("RsaaFrame::centre_primitive (material_edges: primitive, material)"), std::string::npos)
+      << no_material;
+  EXPECT_NE(no_material.find("GL_RG32UI"), std::string::npos) << no_material;
+  const RsaaTargets material_targets(kWidth, kHeight, true);
+  const std::string unexpected_material =
+      invalid_argument_of([&] { pass.resolve(material_targets.frame(glm::mat4(1.0f)), good.colour); });
+  EXPECT_NE(unexpected_material.find("RsaaFrame::centre_primitive"), std::string::npos) << unexpected_material;
+  EXPECT_NE(unexpected_material.find("GL_R32UI"), std::string::npos) << unexpected_material;
+
   RsaaFrame other_size = good;
   other_size.width = kWidth + 1;
   EXPECT_NE(invalid_argument_of([&] { pass.render_subsamples(other_size, draw_nothing); })

@@ -162,8 +162,8 @@ void expect_same_resampled_image(GLuint expected_texture, GLuint actual_texture,
 
 // The default scene resolved by RsaaPass with `settings` (the image the shader files must give).
 struct ResolvedScene {
-  ResolvedScene(const RsaaSettings& settings, int width, int height)
-      : scene("builtin:default", width, height),
+  ResolvedScene(const RsaaSettings& settings, int width, int height, const std::string& scene_name = "builtin:default")
+      : scene(scene_name, width, height, settings.material_edges),
         pass(settings, width, height),
         frame(scene.frame()),
         output(gl::make_texture_2d(GL_RGBA16F, width, height)) {
@@ -222,14 +222,15 @@ class HlslPostProcessOnGl : public test::GlTest, public ::testing::WithParamInte
 TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   constexpr int kWidth = 160, kHeight = 120;
   RsaaSettings settings;
-  settings.auth = GetParam() == 2 ? 0 : GetParam();
-  // 0, 1: the paper's resolve; 2: the extensions (split cap, multi-surface resolve).
+  settings.auth = GetParam() >= 2 ? 0 : GetParam();
+  // 0, 1: the paper's resolve; 2: the extensions (split cap, multi-surface resolve, split and
+  // fetch checks); 3: with material edges too, on a scene of coplanar materials.
   std::string extensions;
   settings.split_cap = 0.0f;
   settings.multi_surface = "fetch";
   settings.split_check = "off";
   settings.fetch_check = "off";
-  if (GetParam() == 2) {
+  if (GetParam() >= 2) {
     settings.split_cap = 2.5f;
     settings.multi_surface = "neighbours";
     settings.split_check = "neighbours";
@@ -237,7 +238,11 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
     extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS -DRSAA_SPLIT_CHECK_NEIGHBOURS"
                  " -DRSAA_FETCH_CHECK_NEIGHBOURS";
   }
-  const ResolvedScene resolved(settings, kWidth, kHeight);
+  if (GetParam() == 3) {
+    settings.material_edges = true;
+    extensions += " -DRSAA_MATERIAL_EDGES";
+  }
+  const ResolvedScene resolved(settings, kWidth, kHeight, GetParam() == 3 ? "builtin:coplanar" : "builtin:default");
   const View& view = resolved.scene.view;
   const RsaaFrame& frame = resolved.frame;
 
@@ -276,6 +281,8 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
       glProgramUniform1i(p, location, 1);
     } else if (n.find("rsaa_centre_depth") != std::string::npos) {
       glProgramUniform1i(p, location, 2);
+    } else if (n.find("rsaa_centre_primitive") != std::string::npos) {
+      glProgramUniform1i(p, location, 6);
     }
   }
   // The constant buffer: the inverse projection taking Direct3D's depth (z = 2 d - 1), the
@@ -299,14 +306,16 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
   const gl::Texture depth = upside_down(frame.centre_depth, GL_DEPTH_COMPONENT32F, kWidth, kHeight);
   const gl::Texture codes0 = upside_down(codes[0], GL_RGBA8UI, kWidth, kHeight);
   const gl::Texture codes1 = upside_down(codes[1], GL_RGBA8UI, kWidth, kHeight);
-  const gl::Texture hlsl_output =
-      draw_post_process(p, {colour.get(), normal.get(), depth.get(), 0, codes0.get(), codes1.get()}, kWidth, kHeight,
-                        "the HLSL post-process");
+  const gl::Texture primitive = upside_down(frame.centre_primitive, settings.material_edges ? GL_RG32UI : GL_R32UI,
+                                            kWidth, kHeight);
+  const gl::Texture hlsl_output = draw_post_process(
+      p, {colour.get(), normal.get(), depth.get(), 0, codes0.get(), codes1.get(), primitive.get()}, kWidth, kHeight,
+      "the HLSL post-process");
 
   expect_same_resampled_image(resolved.output.get(), hlsl_output.get(), frame.colour, kWidth, kHeight, true);
 }
 
-INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1, 2));
+INSTANTIATE_TEST_SUITE_P(Auth, HlslPostProcessOnGl, ::testing::Values(0, 1, 2, 3));
 
 TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
   test::TempDir dir;
@@ -334,7 +343,7 @@ TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
   test::TempDir dir;
   const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") +
                                 " --split-cap 2.5 --multi-surface neighbours --split-check neighbours"
-                                " --fetch-check neighbours");
+                                " --fetch-check neighbours --material-edges on");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* file : {"out/rsaa_prepass.glsl", "out/rsaa_post.frag", "out/rsaa_post.hlsl"}) {
     const std::string text = test::read_text(dir.file(file));
@@ -342,10 +351,17 @@ TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
     EXPECT_NE(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS\n"), std::string::npos) << file;
     EXPECT_NE(text.find("#define RSAA_SPLIT_CHECK_NEIGHBOURS\n"), std::string::npos) << file;
     EXPECT_NE(text.find("#define RSAA_FETCH_CHECK_NEIGHBOURS\n"), std::string::npos) << file;
-    EXPECT_NE(text.find("--split-cap 2.5 --multi-surface neighbours --split-check neighbours --fetch-check neighbours"),
+    EXPECT_NE(text.find("#define RSAA_MATERIAL_EDGES\n"), std::string::npos) << file;
+    EXPECT_NE(text.find("--split-cap 2.5 --multi-surface neighbours --split-check neighbours --fetch-check neighbours"
+                        " --material-edges on"),
               std::string::npos)
         << file;
   }
+  // With material edges the pre-pass takes the draw's material.
+  EXPECT_EQ(glslang_errors("frag", "#version 450\n" + test::read_text(dir.file("out/rsaa_prepass.glsl")) +
+                                       "layout(location = 0) out uvec4 o;\n"
+                                       "void main() { o = rsaa_prepass_code(vec3(1.0), vec3(0.0, 0.0, 1.0), 0u, 3u); }\n"),
+            "");
   EXPECT_EQ(glslang_errors("frag", test::read_text(dir.file("out/rsaa_post.frag"))), "");
   const auto hlsl = test::run_command("glslangValidator -D -V -S frag -e RsaaPostPS -o " + dir.file("p.spv") + " " +
                                       dir.file("out/rsaa_post.hlsl"));
@@ -359,6 +375,7 @@ TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
     EXPECT_EQ(text.find("#define RSAA_MULTI_SURFACE_NEIGHBOURS"), std::string::npos) << file;
     EXPECT_EQ(text.find("#define RSAA_SPLIT_CHECK_NEIGHBOURS"), std::string::npos) << file;
     EXPECT_EQ(text.find("#define RSAA_FETCH_CHECK_NEIGHBOURS"), std::string::npos) << file;
+    EXPECT_EQ(text.find("#define RSAA_MATERIAL_EDGES"), std::string::npos) << file;
   }
 }
 

@@ -65,10 +65,13 @@ if [[ $quick == 1 ]]; then
   step "coverage goals, default scene at 160x120" coverage-goals.md
   bash tools/coverage_goals.sh --width 160 --height 120 --out-dir "$out/coverage-goals" builtin:default \
     >"$out/coverage-goals.md"
+  step "RSAA's goals, material edges off -> on, coplanar scene at 160x120" rsaa-goals.md
+  bash tools/rsaa_goals.sh --width 160 --height 120 --out-dir "$out/rsaa-goals" --without "--material-edges off" \
+    builtin:coplanar >"$out/rsaa-goals.md"
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   step "bench --growth --quick" growth.md
-  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
+  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
     --out-dir "$out/growth" >"$out/growth.md"
   papers_figures
   echo "quick figures done in $((SECONDS - started)) s; docs/ untouched" >&2
@@ -116,26 +119,39 @@ for scene in builtin:default "$engine" "$truck" /usr/share/assimp/models/OBJ/spi
   done
 done
 step "bench, RSAA against its baselines" bench-rsaa.md
-$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
+$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
   --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"
+# RSAA's goals (issue 11) on the bench scenes, the coplanar scene and held-out models, with what the
+# latest default (material edges) changed; crops of the coplanar scene.
+models=/usr/share/assimp/models
+step "RSAA's goals, material edges off -> on" rsaa-goals.md
+bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges off" builtin:default \
+  builtin:grazing builtin:edges builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar \
+  "$engine" "$truck" $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj $models/3DS/fels.3ds $models/Collada/duck.dae \
+  $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o \
+  $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
+  $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
+  >"$out/rsaa-goals.md"
+bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
+  noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
 step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)" prepass-union.md
 { for t in custom-gl4x-union d3d8x gl4x; do $rsaa eval-table tables/$t.json 2>/dev/null; done
   $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
-    --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc" \
+    --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
     --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
 # Cost at the sizes engines run (the post-process as multiples of a copy pass) and how it grows.
 step "post-process at 1280x720" post-1280.md
 $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc" \
+  --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me" \
   --out-dir "$out/post-1280" >"$out/post-1280.md"
 step "the culled pre-pass at 1280x720" prepass-cull.md
 $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
   --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc cull" \
+  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me cull" \
   --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
 step "how cost grows: image size, triangles, lights" growth.md
 $rsaa bench --growth --out-dir "$out/growth" \
-  --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc,rsaa 8x sadp-plane auth0" \
+  --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
   >"$out/growth.md"
 for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
 step "bench" bench.md
@@ -147,7 +163,6 @@ cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
 cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
 papers_figures
 # The coverage family's goals and the scale test on held-out models (issue 14; about 16 minutes).
-models=/usr/share/assimp/models
 step "coverage goals on held-out models" coverage-goals.md
 bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals" $models/3DS/fels.3ds $models/OBJ/WusonOBJ.obj \
   $models/Collada/duck.dae $models/IFC/AC14-FZK-Haus.ifc $models/Q3D/E-AT-AT.q3o $models/MS3D/jeep1.ms3d \

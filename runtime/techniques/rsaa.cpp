@@ -10,7 +10,9 @@ namespace {
 class Rsaa : public Technique {
  public:
   Rsaa(const RsaaSettings& settings, int width, int height)
-      : pass_(settings, width, height), targets_(width, height) {}
+      : pass_(settings, width, height),
+        targets_(width, height, settings.material_edges),
+        material_edges_(settings.material_edges) {}
 
   void render(const GpuScene& scene, const View& view, GLuint output) override {
     timer_.begin("main");
@@ -29,7 +31,7 @@ class Rsaa : public Technique {
   }
 
   double bytes_per_pixel() const override {
-    return RsaaTargets::kBytesPerPixel + pass_.code_bytes_per_pixel();
+    return RsaaTargets::bytes_per_pixel(material_edges_) + pass_.code_bytes_per_pixel();
   }
 
   void set_mask_output(GLuint texture) { mask_output_ = texture; }
@@ -39,6 +41,7 @@ class Rsaa : public Technique {
   SceneRenderer renderer_;
   RsaaTargets targets_;
   GLuint mask_output_ = 0;
+  bool material_edges_;
 };
 
 }  // namespace
@@ -74,6 +77,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.multi_surface = o.multi_surface;
   s.split_check = o.split_check;
   s.fetch_check = o.fetch_check;
+  s.material_edges = o.material_edges == "on";
   s.post = o.post;
   return s;
 }
@@ -108,16 +112,19 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --split-check must be off or neighbours, not '" + o.split_check + "'");
   if (o.fetch_check != "off" && o.fetch_check != "neighbours")
     bad("rsaa --fetch-check must be off or neighbours, not '" + o.fetch_check + "'");
+  if (o.material_edges != "off" && o.material_edges != "on")
+    bad("rsaa --material-edges must be off or on, not '" + o.material_edges + "'");
   if (o.post != "edges" && o.post != "single") bad("rsaa --post must be edges or single, not '" + o.post + "'");
 }
 
-// " cap1.5 ms sc fc": the resolve's options beyond the paper, when used.
+// " cap1.5 ms sc fc me": the options beyond the paper, when used.
 std::string rsaa_extension_label(const TechniqueOptions& o) {
   std::ostringstream label;
   if (o.split_cap > 0.0) label << " cap" << o.split_cap;
   if (o.multi_surface != "fetch") label << " ms";
   if (o.split_check != "off") label << " sc";
   if (o.fetch_check != "off") label << " fc";
+  if (o.material_edges != "off") label << " me";
   if (o.post != "edges") label << " " << o.post << "-pass";
   if (o.prepass_cull != "off") label << " cull";
   return label.str();

@@ -45,7 +45,7 @@ Scene subdivide(const Scene& scene, int levels) {
     next.indices.clear();
     next.draws.clear();
     for (const DrawRange& d : out.draws) {
-      DrawRange split{std::uint32_t(next.indices.size()), d.index_count * 4, d.texture};
+      DrawRange split{std::uint32_t(next.indices.size()), d.index_count * 4, d.texture, d.material};
       for (std::uint32_t i = d.first_index; i < d.first_index + d.index_count; i += 3) {
         const std::uint32_t a = out.indices[i], b = out.indices[i + 1], c = out.indices[i + 2];
         const auto ab = std::uint32_t(next.vertices.size());

@@ -18,7 +18,7 @@ namespace rsaa::cli {
 namespace {
 
 struct ShadersArgs {
-  std::string out_dir, pattern = "d3d8x", table;
+  std::string out_dir, pattern = "d3d8x", table, material_edges = "off";
   RsaaSettings settings;
 };
 
@@ -37,12 +37,14 @@ std::string command_line(const ShadersArgs& a) {
          (s.multi_surface == "fetch" ? "" : " --multi-surface " + s.multi_surface) +
          (s.split_check == "off" ? "" : " --split-check " + s.split_check) +
          (s.fetch_check == "off" ? "" : " --fetch-check " + s.fetch_check) +
+         (s.material_edges ? " --material-edges on" : "") +
          (s.depth == "gl" ? "" : " --depth " + s.depth) + " --prepass " + s.prepass +
          " --first-unit " +
          std::to_string(s.prepass_first_unit) + " --uniform-binding " + std::to_string(s.uniform_binding);
 }
 
 int run_shaders(ShadersArgs a) {
+  a.settings.material_edges = a.material_edges == "on";
   const OffsetTable table = a.table.empty() ? gl::builtin_offset_table(a.pattern) : read_offset_table(a.table);
   const int n = table.pattern.size();
   const bool multisample = a.settings.prepass == "msaa";
@@ -73,7 +75,7 @@ int run_shaders(ShadersArgs a) {
     // The options beyond the paper, as rsaa_shader_defines() writes them.
     for (const char* name :
          {"#define RSAA_SPLIT_CAP ", "#define RSAA_MULTI_SURFACE_NEIGHBOURS", "#define RSAA_SPLIT_CHECK_NEIGHBOURS",
-          "#define RSAA_FETCH_CHECK_NEIGHBOURS"}) {
+          "#define RSAA_FETCH_CHECK_NEIGHBOURS", "#define RSAA_MATERIAL_EDGES"}) {
       const std::size_t at = defines.find(name);
       if (at != std::string::npos) hlsl_defines += defines.substr(at, defines.find('\n', at) + 1 - at);
     }
@@ -126,6 +128,10 @@ Action add_shaders_command(CLI::App& app) {
                   "Ours: neighbours (half the offset where no outside pixel shows what a subsample saw) | off (the paper's)")
       ->capture_default_str()
       ->check(CLI::IsMember({"off", "neighbours"}));
+  cmd->add_option("--material-edges", args->material_edges,
+                  "Ours: on (the pre-pass takes each draw's material; centre_primitive is RG32UI) | off (the paper's)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "on"}));
   cmd->add_option("--depth", s.depth,
                   "The engine's depth convention: gl (glClipControl GL_NEGATIVE_ONE_TO_ONE, OpenGL's default) | "
                   "zero-to-one (GL_ZERO_TO_ONE) | reverse-z (GL_ZERO_TO_ONE, nearer is greater)")

@@ -60,6 +60,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "different in the outside pixel in its direction fetches with half the offset) | off (the paper's "
                   "fetch)")
       ->capture_default_str();
+  cmd->add_option("--material-edges", o.material_edges,
+                  "rsaa (ours): off (subsamples compare geometry only, the paper) | on (a subsample on another "
+                  "material than the centre's is dissimilar: colour edges between coplanar parts)")
+      ->capture_default_str();
   cmd->add_option("--post", o.post,
                   "rsaa post-process: edges (an edge pass marks the pixels to resolve, the resolve runs only "
                   "there) | single (one pass over every pixel); the same image")

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# RSAA's image-quality goals (issue 11) on any scenes, held-out models included, and what one set
+# of options changes: against 64x SSAA, RSAA 4x and 8x with the defaults beside no AA, the
+# FXAA-style pass and hardware 4x MSAA, each RSAA column "without -> defaults" where WITHOUT are
+# options turning one default off (for example "--material-edges off"). Prints a Markdown table
+# (8x below 4x MSAA marked "!") and the summary lines: mean gain over no AA, 8x over 4x, against
+# FXAA, the lowest change. Keeps the images in OUT_DIR/<scene>/.
+# Usage: tools/rsaa_goals.sh [--width W] [--height H] [--out-dir DIR] [--without "OPTIONS"] SCENE...
+set -euo pipefail
+cd "$(dirname "$0")/.."
+width=640 height=480 out=out/rsaa-goals without=""
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --width) width=${2:?}; shift 2 ;;
+    --height) height=${2:?}; shift 2 ;;
+    --out-dir) out=${2:?}; shift 2 ;;
+    --without) without=${2:?}; shift 2 ;;
+    -h | --help) sed -n 2,8p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "rsaa_goals.sh: unknown option $1" >&2; exit 2 ;;
+    *) break ;;
+  esac
+done
+[[ $# -gt 0 ]] || { echo "rsaa_goals.sh: name at least one scene (builtin:NAME or a model file)" >&2; exit 2; }
+rsaa=./build/rsaa
+[[ -x $rsaa ]] || { echo "rsaa_goals.sh: $rsaa is missing: run tools/build.sh first" >&2; exit 2; }
+
+# render SCENE OUT [technique options...]: one image; says which command failed.
+render() {
+  local scene=$1 file=$2; shift 2
+  $rsaa render --scene "$scene" --width "$width" --height "$height" "$@" --out "$file" >/dev/null ||
+    { echo "rsaa_goals.sh: rsaa render --scene $scene $* failed (exit $?)" >&2; exit 1; }
+}
+psnr() {
+  local text
+  text=$($rsaa compare "$1" "$2") || { echo "rsaa_goals.sh: rsaa compare $1 $2 failed" >&2; exit 1; }
+  awk 'NR == 2 {print $2}' <<<"$text"
+}
+
+rows=() summary=()
+for scene in "$@"; do
+  name=$(basename "${scene#builtin:}"); name=${name%.*}
+  dir=$out/$name
+  mkdir -p "$dir"
+  echo "rsaa_goals: $scene" >&2
+  render "$scene" "$dir/reference.png" --technique ssaa --samples 64
+  declare -A p=()
+  for t in noaa fxaa "msaa --samples 4" "rsaa --samples 4" "rsaa --samples 8"; do
+    file=$dir/$(tr -d ' -' <<<"$t").png
+    # shellcheck disable=SC2086
+    render "$scene" "$file" --technique $t
+    p[$t]=$(psnr "$file" "$dir/reference.png")
+    if [[ $t == rsaa* && -n $without ]]; then
+      # shellcheck disable=SC2086
+      render "$scene" "${file%.png}-without.png" --technique $t $without
+      p[$t without]=$(psnr "${file%.png}-without.png" "$dir/reference.png")
+    fi
+  done
+  n=${p[noaa]} f=${p[fxaa]} m=${p[msaa --samples 4]} r4=${p[rsaa --samples 4]} r8=${p[rsaa --samples 8]}
+  cell() { if [[ -n $without ]]; then echo "${p[$1 without]} -> ${p[$1]}"; else echo "${p[$1]}"; fi; }
+  delta=$(awk -v a="$r8" -v b="$m" 'BEGIN {printf "%+.2f%s", a - b, (a < b ? " !" : "")}')
+  rows+=("| $name | $n | $f | $m | $(cell "rsaa --samples 4") | $(cell "rsaa --samples 8") | $delta |")
+  echo "  ${rows[-1]}" >&2
+  summary+=("$name $n $f $m $r4 $r8 ${p[rsaa --samples 4 without]:-$r4} ${p[rsaa --samples 8 without]:-$r8}")
+  unset p
+done
+
+echo "${width}x${height}, PSNR dB against 64x SSAA; RSAA with the defaults${without:+ (without -> with: \`$without\` -> defaults)}; ! = RSAA 8x below 4x MSAA:"
+echo
+echo "| scene | noaa | fxaa | msaa 4x | RSAA 4x | RSAA 8x | 8x - msaa 4x |"
+echo "| --- | --- | --- | --- | --- | --- | --- |"
+printf '%s\n' "${rows[@]}"
+echo
+printf '%s\n' "${summary[@]}" | awk -v without="$without" '
+  { count++; gain += $6 - $2; step += $6 - $5; fxaa += $3; rsaa += $6;
+    if ($6 < $4) below = below " " $1;
+    change8 = $6 - $8; change4 = $5 - $7;
+    if (count == 1 || change8 < low8) { low8 = change8; low8_at = $1 }
+    if (count == 1 || change4 < low4) { low4 = change4; low4_at = $1 } }
+  END {
+    printf "- mean gain of RSAA 8x over no AA: %+.2f dB; 8x over 4x: %+.2f dB; mean PSNR RSAA 8x %.2f, FXAA %.2f (%d scenes)\n",
+           gain / count, step / count, rsaa / count, fxaa / count, count;
+    printf "- RSAA 8x below 4x MSAA on:%s\n", below == "" ? " none" : below;
+    if (without != "")
+      printf "- lowest change from `%s` to the defaults: 8x %+.2f dB (%s), 4x %+.2f dB (%s)\n",
+             without, low8, low8_at, low4, low4_at;
+  }'
