@@ -166,16 +166,37 @@ int2 RsaaOutsideStep(float2 sample_position) {
   return int2(sign(s) * floor(abs(s) + 0.5));
 }
 
+#if defined(RSAA_SPLIT_CHECK_NEIGHBOURS) || defined(RSAA_FETCH_CHECK_NEIGHBOURS) || \
+    defined(RSAA_MULTI_SURFACE_NEIGHBOURS) || RSAA_AUTH == 1
+#define RSAA_READS_OUTSIDE_PIXELS
+// rsaa_post.glsl's RsaaOutside: the outside pixel nearest each subsample, read and compared with
+// the centre once for every check.
+struct RsaaOutside {
+  int2 pixel[RSAA_SAMPLE_COUNT];
+  uint2 normal[RSAA_SAMPLE_COUNT];
+  float3 position[RSAA_SAMPLE_COUNT];
+  float similarity[RSAA_SAMPLE_COUNT];  // RsaaCentresSimilarity(centre, outside pixel)
+};
+
+RsaaOutside RsaaOutsidePixels(int2 pixel, float3 position, float3 normal) {
+  RsaaOutside o;
+  [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    o.pixel[i] = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[i]), int2(0, 0), int2(rsaa_viewport) - 1);
+    o.normal[i] = rsaa_centre_normal.Load(int3(o.pixel[i], 0));
+    o.position[i] = RsaaViewPosition(o.pixel[i]);
+    o.similarity[i] = RsaaCentresSimilarity(pixel, position, normal, o.pixel[i], o.position[i],
+                                            RsaaDecodeNormal(o.normal[i]));
+  }
+  return o;
+}
+#endif
+
 #ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
-// rsaa_post.glsl's rsaa_split_check for one subsample of similarity s that the split calls
+// rsaa_post.glsl's rsaa_split_check for one subsample k of similarity s that the split calls
 // similar: is it dissimilar after all?
-bool RsaaSplitCheckDissimilar(int2 pixel, uint2 centre_normal, int k, float s) {
-  if (!RsaaIsSurface(centre_normal) || !(s > rsaa_threshold)) return false;
-  int2 q = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[k]), int2(0, 0), int2(rsaa_viewport) - 1);
-  uint2 q_normal = rsaa_centre_normal.Load(int3(q, 0));
-  if (!RsaaIsSurface(q_normal)) return false;
-  float t = RsaaCentresSimilarity(pixel, RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal), q,
-                                  RsaaViewPosition(q), RsaaDecodeNormal(q_normal));
+bool RsaaSplitCheckDissimilar(uint2 centre_normal, int k, float s, RsaaOutside o) {
+  if (!RsaaIsSurface(centre_normal) || !(s > rsaa_threshold) || !RsaaIsSurface(o.normal[k])) return false;
+  float t = o.similarity[k];
   return t * 1.5 > s && t < s * 1.5;
 }
 #endif
@@ -183,79 +204,61 @@ bool RsaaSplitCheckDissimilar(int2 pixel, uint2 centre_normal, int k, float s) {
 #ifdef RSAA_FETCH_CHECK_NEIGHBOURS
 // rsaa_post.glsl's rsaa_fetch_check: 0.5 when no dissimilar subsample finds a like surface in the
 // outside pixel in its direction, else 1.
-float RsaaFetchCheck(int2 pixel, uint2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask) {
+float RsaaFetchCheck(uint2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask, RsaaOutside o) {
   bool centre_is_surface = RsaaIsSurface(centre_normal);
-  float3 position = RsaaViewPosition(pixel);
-  float3 normal = RsaaDecodeNormal(centre_normal);
   bool matched = false;
   [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     if ((mask & (1u << i)) != 0u) continue;
-    int2 q = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[i]), int2(0, 0), int2(rsaa_viewport) - 1);
-    uint2 q_normal = rsaa_centre_normal.Load(int3(q, 0));
-    bool q_is_surface = RsaaIsSurface(q_normal);
-    float s = similarity[i];
-    if (!centre_is_surface || s >= 1.0e9 || !q_is_surface) {
+    bool q_is_surface = RsaaIsSurface(o.normal[i]);
+    float s = similarity[i], t = o.similarity[i];
+    if (!centre_is_surface || s >= 1.0e9 || !q_is_surface)
       matched = matched || (centre_is_surface ? (s >= 1.0e9 && !q_is_surface) : q_is_surface);
-      continue;
-    }
-    float t = RsaaCentresSimilarity(pixel, position, normal, q, RsaaViewPosition(q), RsaaDecodeNormal(q_normal));
-    matched = matched || (t * 3.0 > s && t < s * 3.0);
+    else
+      matched = matched || (t * 3.0 > s && t < s * 3.0);
   }
   return matched ? 1.0 : 0.5;
 }
 #endif
 
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
-// rsaa_post.glsl's rsaa_centre_differs and rsaa_multi_surface.
-bool RsaaCentreDiffers(int2 pixel, uint2 normal, float3 position, int2 other) {
+// rsaa_post.glsl's rsaa_centres_differ (the two centres' similarity given) and rsaa_multi_surface.
+bool RsaaCentresDiffer(int2 pixel, uint2 normal, int2 other, uint2 other_normal, float similarity) {
   if (all(other == pixel)) return false;
-  uint2 other_normal = rsaa_centre_normal.Load(int3(other, 0));
   bool a = RsaaIsSurface(normal), b = RsaaIsSurface(other_normal);
   if (a != b) return true;
   if (!a) return false;
-  return RsaaCentresSimilarity(pixel, position, RsaaDecodeNormal(normal), other, RsaaViewPosition(other),
-                               RsaaDecodeNormal(other_normal)) > rsaa_threshold;
+  return similarity > rsaa_threshold;
 }
 
-bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask, out float4 resolved) {
+bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask, RsaaOutside o, out float4 resolved) {
   resolved = colour;
   if (any(isnan(colour)) || any(isinf(colour))) return false;
-  int2 last = int2(rsaa_viewport) - 1;
-  float3 position = RsaaViewPosition(pixel);
-  int2 first = int2(-1, -1);
-  uint2 first_normal = uint2(0u, 0u);
-  float3 first_position = float3(0.0, 0.0, 0.0);
-  bool three = false;
-  uint takes_outside = 0u;
-  uint known = 0u, differing = 0u, compared = 0u;  // per outside pixel, bit (step.y + 1) * 3 + step.x + 1
+  uint outside = 0u;
+  int first = -1;
   [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-    if ((mask & (1u << i)) != 0u) continue;
-    int2 step = RsaaOutsideStep(rsaa_sample_positions[i]);
-    uint bit = 1u << uint((step.y + 1) * 3 + step.x + 1);
-    int2 q = clamp(pixel + step, int2(0, 0), last);
-    if ((known & bit) == 0u) {
-      known |= bit;
-      if (RsaaCentreDiffers(pixel, centre_normal, position, q)) differing |= bit;
-    }
-    if ((differing & bit) == 0u) continue;
-    takes_outside |= 1u << i;
-    if (first.x < 0) {
-      first = q;
-      first_normal = rsaa_centre_normal.Load(int3(q, 0));
-      first_position = RsaaViewPosition(q);
-      compared |= bit;
-    } else if (!three && (compared & bit) == 0u) {
-      compared |= bit;
-      three = RsaaCentreDiffers(first, first_normal, first_position, q);
-    }
+    bool differs = (mask & (1u << i)) == 0u &&
+                   RsaaCentresDiffer(pixel, centre_normal, o.pixel[i], o.normal[i], o.similarity[i]);
+    if (differs) outside |= 1u << i;
+    if (differs && first < 0) first = i;
+  }
+  if (first < 0) return false;
+  int2 first_pixel = o.pixel[first];
+  uint2 first_normal = o.normal[first];
+  float3 first_position = o.position[first], first_decoded = RsaaDecodeNormal(first_normal);
+  bool three = false;
+  [unroll] for (int j = 0; j < RSAA_SAMPLE_COUNT; ++j) {
+    if ((outside & (1u << j)) == 0u || j == first) continue;
+    float t = RsaaCentresSimilarity(first_pixel, first_position, first_decoded, o.pixel[j], o.position[j],
+                                    RsaaDecodeNormal(o.normal[j]));
+    three = three || RsaaCentresDiffer(first_pixel, first_normal, o.pixel[j], o.normal[j], t);
   }
   if (!three) return false;
   float3 sum = float3(0.0, 0.0, 0.0);
-  [unroll] for (int j = 0; j < RSAA_SAMPLE_COUNT; ++j) {
+  [unroll] for (int k = 0; k < RSAA_SAMPLE_COUNT; ++k) {
     float3 c = colour.rgb;
-    if ((takes_outside & (1u << j)) != 0u) {
-      float3 outside = rsaa_colour.Load(int3(clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[j]), int2(0, 0), last), 0)).rgb;
-      if (!any(isnan(outside)) && !any(isinf(outside))) c = outside;
+    if ((outside & (1u << k)) != 0u) {
+      float3 fetched = rsaa_colour.Load(int3(o.pixel[k], 0)).rgb;
+      if (!any(isnan(fetched)) && !any(isinf(fetched))) c = fetched;
     }
     sum += c;
   }
@@ -291,6 +294,9 @@ float4 RsaaResolve(int2 pixel) {
 #ifdef RSAA_SPLIT_CAP
   split = min(split, RSAA_SPLIT_CAP * rsaa_threshold);
 #endif
+#ifdef RSAA_READS_OUTSIDE_PIXELS
+  RsaaOutside o = RsaaOutsidePixels(pixel, RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal));
+#endif
   uint mask = 0u;
   int representative = 0;  // Listing 3: the dissimilar subsample farthest from the centre
   float farthest = -1.0;
@@ -298,28 +304,24 @@ float4 RsaaResolve(int2 pixel) {
     float d = dot(rsaa_sample_positions[k], rsaa_sample_positions[k]);
     bool similar = similarity[k] <= split;
 #ifdef RSAA_SPLIT_CHECK_NEIGHBOURS
-    if (similar && RsaaSplitCheckDissimilar(pixel, centre_normal, k, similarity[k])) similar = false;
+    if (similar && RsaaSplitCheckDissimilar(centre_normal, k, similarity[k], o)) similar = false;
 #endif
     if (similar) mask |= 1u << k;
     else if (d >= farthest) { representative = k; farthest = d; }
   }
   float2 offset = rsaa_offsets[mask];
 #ifdef RSAA_FETCH_CHECK_NEIGHBOURS
-  offset *= RsaaFetchCheck(pixel, centre_normal, similarity, mask);
+  offset *= RsaaFetchCheck(centre_normal, similarity, mask, o);
 #endif
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
   float4 resolved;
-  if (any(offset != float2(0.0, 0.0)) && RsaaMultiSurface(pixel, centre_normal, colour, mask, resolved))
+  if (any(offset != float2(0.0, 0.0)) && RsaaMultiSurface(pixel, centre_normal, colour, mask, o, resolved))
     return resolved;
 #endif
 #if RSAA_AUTH == 1
-  int2 outside = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[representative]), int2(0, 0),
-                       int2(rsaa_viewport) - 1);
-  uint2 outside_normal = rsaa_centre_normal.Load(int3(outside, 0));
-  if (centre_is_surface && RsaaIsSurface(outside_normal)) {
-    float to_outside = RsaaCentresSimilarity(pixel, RsaaViewPosition(pixel), RsaaDecodeNormal(centre_normal), outside,
-                                             RsaaViewPosition(outside), RsaaDecodeNormal(outside_normal));
+  if (centre_is_surface && RsaaIsSurface(o.normal[representative])) {
+    float to_outside = o.similarity[representative];
     if (to_outside - similarity[representative] > similarity[representative]) offset *= 0.5;
   }
 #endif
