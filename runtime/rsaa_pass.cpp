@@ -641,9 +641,8 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   glViewport(0, 0, frame.width, frame.height);
   if (edges) {
     // Every pixel's colour as it is (and the all-similar mask): the resolve pass overwrites the
-    // edge pixels. An image copy, and an edge pass that writes depth only: on llvmpipe the edge
-    // pass that also fetched and wrote every colour cost about twice as much (README, *How cost
-    // grows*).
+    // edge pixels. An image copy, and an edge pass that writes depth only: on llvmpipe an edge
+    // pass that also fetched and wrote every colour cost more (README, *Cheaper post-processes*).
     glCopyImageSubData(frame.colour, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, frame.width,
                        frame.height, 1);
     if (settings_.output_mask) {

@@ -161,9 +161,9 @@ struct RsaaSettings {
   // feature thinner than a pixel that covers no centre of the neighbourhood is missed (README:
   // "Culling the pre-pass"). Needs the jittered pre-pass.
   std::string prepass_cull = "off";
-  // How resolve() runs the post-process: "edges" (default) in two passes, an edge pass that copies
-  // every pixel's colour and marks in a depth target the pixels whose mask is not all-similar,
-  // then the resolve only there (an early depth test skips the rest: a driver that executes both
+  // How resolve() runs the post-process: "edges" (default) in two passes after a copy of the
+  // colour image, an edge pass that marks in a depth target the pixels whose mask is not
+  // all-similar, then the resolve only there (an early depth test skips the rest: a driver that executes both
   // sides of a branch for a whole SIMD batch, as Mesa llvmpipe, pays only for edge pixels);
   // "single": one pass over every pixel. Both give the same image (tests compare them).
   std::string post = "edges";
