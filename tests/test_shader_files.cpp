@@ -238,8 +238,9 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
     extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS -DRSAA_SPLIT_CHECK_NEIGHBOURS"
                  " -DRSAA_FETCH_CHECK_NEIGHBOURS";
   }
-  if (GetParam() == 3) {
+  if (GetParam() == 3) {  // with post-pass authentication, which compares materials too
     settings.material_edges = true;
+    settings.auth = 1;
     extensions += " -DRSAA_MATERIAL_EDGES";
   }
   const ResolvedScene resolved(settings, kWidth, kHeight, GetParam() == 3 ? "builtin:coplanar" : "builtin:default");
