@@ -280,8 +280,9 @@ Scene coplanar() {
       }
     }
   }
-  m.begin_draw(4);
-  panel(-0.6f, 1.0f, 0.6f, 2.0f, kBlue);
+  m.begin_draw(4);  // in two halves: every vertex of the bands beside it is one of its own
+  panel(-0.6f, 1.0f, 0.6f, 1.5f, kBlue);
+  panel(-0.6f, 1.5f, 0.6f, 2.0f, kBlue);
   // Roof on the right, sloping 35 degrees towards the camera: boards of two materials.
   const glm::mat4 roof = glm::rotate(glm::translate(glm::mat4(1), {2.2f, 1.2f, 0.3f}), glm::radians(35.0f),
                                      glm::vec3(1, 0, 0));
@@ -289,7 +290,7 @@ Scene coplanar() {
   for (int colour = 0; colour < 2; ++colour) {
     m.begin_draw(5 + std::uint32_t(colour));
     for (int board = colour; board < 10; board += 2) {
-      const float x0 = -1.5f + 0.3f * board, x1 = x0 + 0.3f;
+      const float x0 = -1.5f + 0.3f * board, x1 = -1.5f + 0.3f * (board + 1);  // as the next board's x0
       m.quad(r(x0, -1.2f), r(x0, 1.2f), r(x1, 1.2f), r(x1, -1.2f), colour ? kBrown : kYellow);
     }
   }

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <new>
 #include <set>
 #include <sstream>
@@ -334,6 +336,12 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
       source.name = (directory / file.C_Str()).string();
     }
   }
+  // What the renderer's material id (DrawRange::material, RSAA's material edges) stands for: one
+  // appearance, the colour (the material's times the vertex colours, when one colour over the
+  // mesh) and the texture it shades with. Meshes that look the same (one material split per mesh,
+  // materials differing only in what this renderer does not shade) share an id, so that no false
+  // edge runs between them; a mesh whose vertex colours vary is an appearance of its own.
+  std::map<std::string, std::uint32_t> appearances;
 
   std::size_t dropped = 0;
   for (unsigned k = 0; k < ai->mNumMeshes; ++k) {
@@ -358,8 +366,17 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
       scene.vertices.push_back(out);
     }
     // The material for now: with_textures turns it into the texture's index.
-    DrawRange draw{static_cast<std::uint32_t>(scene.indices.size()), 0, int(mesh->mMaterialIndex),
-                   mesh->mMaterialIndex};
+    std::string appearance = model.textures[mesh->mMaterialIndex].name + "|mesh " + std::to_string(k);
+    const bool one_colour = std::all_of(scene.vertices.begin() + base, scene.vertices.end(),
+                                        [&](const SceneVertex& v) { return v.albedo == scene.vertices[base].albedo; });
+    if (one_colour && scene.vertices.size() > base) {
+      const glm::vec3 c = scene.vertices[base].albedo;
+      char colour[80];
+      std::snprintf(colour, sizeof colour, "|%a %a %a", double(c.r), double(c.g), double(c.b));
+      appearance = model.textures[mesh->mMaterialIndex].name + colour;
+    }
+    const std::uint32_t material = appearances.emplace(appearance, std::uint32_t(appearances.size())).first->second;
+    DrawRange draw{static_cast<std::uint32_t>(scene.indices.size()), 0, int(mesh->mMaterialIndex), material};
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
       const aiFace& face = mesh->mFaces[f];
       if (face.mNumIndices != 3) continue;

@@ -75,9 +75,12 @@ static_assert(offsetof(RsaaUniformHead, sample_shift) - kJitterOffset == offseto
               "the per-draw fields are one update");
 
 // The pass's post-process texture units (rsaa_post.glsl with RSAA_POST_FIRST_UNIT 0).
+// Codes take up to four units (16 subsamples, four per texel); the primitive target (material
+// edges) comes after the last of them.
 constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, kFirstCodeUnit = 4,
-              kPrimitiveUnit = 6;
-constexpr int kPostUnits = 8;
+              kPrimitiveUnit = 8;
+constexpr int kPostUnits = 9;
+static_assert(kFirstCodeUnit + (kMaxTableSamples + 3) / 4 <= kPrimitiveUnit, "code units overlap the primitive's");
 
 // The table the pass uses: the settings' own, or the built-in one of the pattern named.
 OffsetTable table_of(const RsaaSettings& settings) {

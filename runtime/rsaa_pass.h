@@ -15,7 +15,10 @@
 //                     pre-pass compares it with u_primitive_base + gl_PrimitiveID + 1. With
 //                     RsaaSettings::material_edges GL_RG32UI, the second channel the material of
 //                     the triangle's draw (any value the engine chooses per material; the
-//                     pre-pass compares it with u_material / its `material` argument)
+//                     pre-pass compares it with u_material / its `material` argument). The
+//                     G-buffer's output there must then be a uvec2: a uint output leaves the
+//                     second channel undefined, which no check here can see (every triangle
+//                     edge would look like a material edge)
 //   centre_depth      GL_DEPTH_COMPONENT32F, the depth of the same draw
 // rsaa_encode_normal() is in shaders/rsaa_common.glsl (installed in share/rsaa/shaders);
 // RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
@@ -74,7 +77,7 @@
 // GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
 // program, depth test/function/mask, stencil test/functions/operations/masks, blending and
 // colour masks of every draw buffer, scissor test, culling, polygon mode, rasterizer discard, sample shading, the vertex array, the
-// textures and sampler objects bound to units 0-7 and to the pre-pass's three units, and the
+// textures and sampler objects bound to units 0-8 and to the pre-pass's three units, and the
 // uniform buffer binding; the engine's scissor, masks, culling and samplers do not reach the
 // pass. (A program the engine deleted while current cannot be restored: none is current after.)
 // Textures and programs they create belong to the RsaaPass object.
@@ -137,9 +140,11 @@ struct RsaaSettings {
   // a window in its frame, a decal), which no geometric similarity sees. false: the subsamples
   // compare geometry only (the paper). true: the engine writes each draw's material into
   // centre_primitive's second channel (GL_RG32UI) and passes it to the pre-pass; a subsample on
-  // another material than the centre's is maximally different. Off here so that an engine's
-  // frame contract does not change under it; the renderer (`rsaa render`), whose scenes carry
-  // materials, turns it on by default (it wins on every scene measured, README "Material edges").
+  // another material than the centre's is maximally different. Give materials that look alike
+  // one id: a material edge is resampled as a colour edge, and distorts the masks of the real
+  // edges near it. Off here so that an engine's frame contract does not change under it; the
+  // renderer (`rsaa render`), whose scenes carry materials (one id per appearance), turns it on
+  // by default (no scene measured loses, README "Material edges").
   bool material_edges = false;
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver); "msaa"
@@ -172,7 +177,7 @@ struct RsaaSettings {
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
   // Where the shaders find the pass's resources: the pre-pass's three textures at units
   // prepass_first_unit to +2, the uniform block (shaders/rsaa_uniforms.glsl) at uniform_binding.
-  // The post-process, the pass's own program, uses units 0-7. Checked against the driver's limits.
+  // The post-process, the pass's own program, uses units 0-8. Checked against the driver's limits.
   int prepass_first_unit = 13;
   int uniform_binding = 13;
 };

@@ -34,8 +34,9 @@ struct DrawRange {
   std::uint32_t first_index = 0;
   std::uint32_t index_count = 0;
   int texture = -1;
-  // The draw's material (the model's material index; 0 in the built-in scenes): RSAA's material
-  // edges (RsaaSettings::material_edges) tell coplanar parts apart by it.
+  // The draw's material: one id per appearance (a model's materials of equal base colour and
+  // texture share it; 0 in the built-in scenes but builtin:coplanar). RSAA's material edges
+  // (RsaaSettings::material_edges) tell coplanar parts apart by it.
   std::uint32_t material = 0;
 };
 

@@ -20,12 +20,13 @@
 //   RSAA_FETCH_CHECK_NEIGHBOURS  (optional) a pixel none of whose dissimilar subsamples finds a like
 //                            surface in its outside pixel fetches with half the offset
 //   RSAA_MATERIAL_EDGES      (optional) the centre primitive target (RG32UI, the material in .y)
-//                            at unit RSAA_POST_FIRST_UNIT + 6: two centres of different materials
+//                            at unit RSAA_POST_FIRST_UNIT + 8: two centres of different materials
 //                            compare as maximally different, as the pre-pass codes them
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
-//                            table, then the code textures (two units), centre primitive
+//                            table, the code textures (ceil(RSAA_SAMPLE_COUNT / 4) units from
+//                            + 4), the centre primitive at + 8
 //   RSAA_UNIFORM_BINDING     (13) the uniform block (rsaa_uniforms.glsl)
 //
 // The table texture (RGBA32F, min(masks, 256) x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
@@ -87,7 +88,7 @@ vec3 rsaa_post_position(ivec2 pixel) {
 }
 
 #ifdef RSAA_MATERIAL_EDGES
-layout(binding = RSAA_POST_FIRST_UNIT + 6) uniform usampler2D rsaa_post_centre_primitive;  // RG32UI
+layout(binding = RSAA_POST_FIRST_UNIT + 8) uniform usampler2D rsaa_post_centre_primitive;  // RG32UI
 #endif
 
 // The similarity of the surfaces at the centres of pixels a and b (positions and normals given),

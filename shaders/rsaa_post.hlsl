@@ -16,8 +16,8 @@
 // Resources (registers overridable by defining RSAA_REGISTER_*):
 //   t0 colour (linear), t1 centre normal (uint2: rsaa_encode_normal, 0 = background), t2 centre
 //   depth (0 near .. 1 far), t3.. the codes: subsample i in channel i % 4 of texture i / 4, as
-//   rsaa_prepass.glsl writes them; with RSAA_MATERIAL_EDGES t5 the centre primitive (uint2: the
-//   material in .y); s0 a linear clamp-to-edge sampler; b0 the constants below,
+//   rsaa_prepass.glsl writes them (up to four textures: t3-t6); with RSAA_MATERIAL_EDGES t7 the
+//   centre primitive (uint2: the material in .y); s0 a linear clamp-to-edge sampler; b0 the constants below,
 //   with rsaa_inverse_projection such that mul(rsaa_inverse_projection, ndc) is view space
 //   (ndc.y up, ndc.z = depth).
 #ifndef RSAA_POST_HLSL
@@ -51,7 +51,7 @@
 #define RSAA_REGISTER_CODES t3
 #endif
 #ifndef RSAA_REGISTER_MATERIAL
-#define RSAA_REGISTER_MATERIAL t5
+#define RSAA_REGISTER_MATERIAL t7
 #endif
 #ifndef RSAA_REGISTER_SAMPLER
 #define RSAA_REGISTER_SAMPLER s0

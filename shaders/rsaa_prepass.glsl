@@ -89,7 +89,12 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
   int subsample = rsaa_subsample;
 #endif
   uvec2 centre_primitive = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+#ifdef RSAA_MATERIAL_EDGES
+  // Primitive ids repeated across draws must not hide a material edge: both must match.
+  if (primitive != 0u && centre_primitive == uvec2(primitive, material)) return uvec4(1u);  // decodes to 0
+#else
   if (primitive != 0u && centre_primitive.x == primitive) return uvec4(1u);  // decodes to 0
+#endif
   uvec2 centre_normal = texelFetch(rsaa_centre_normal, pixel, 0).xy;
   // A surface subsample in a background pixel: different.
   if (!rsaa_is_surface(centre_normal)) return uvec4(RSAA_CODE_MAX);
@@ -108,6 +113,9 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
     if (rsaa_is_surface(outside_normal)) {
       float to_outside = rsaa_similarity(view_position, view_face_normal, rsaa_centre_position(outside),
                                          rsaa_decode_normal(outside_normal));
+#ifdef RSAA_MATERIAL_EDGES
+      if (texelFetch(rsaa_centre_primitive, outside, 0).y != material) to_outside = 1.0e9;  // another material
+#endif
       if (to_outside > similarity) similarity = 0.0;
     }
   }

@@ -67,6 +67,7 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
            {"--technique msaa --samples 8", "use ssaa --samples 8"},
            {"--technique dyncov --rules evict", "--rules must be seed or surface"},
            {"--technique rsaa --code-bits 12", "--code-bits"},
+           {"--technique rsaa --material-edges yes", "--material-edges must be off or on, not 'yes'"},
        }) {
     const std::string size = bad.args.find("--width") == std::string::npos ? "--width 32 --height 24 " : "";
     const auto r = run_rsaa("render " + size + bad.args + " --out " + out);

@@ -238,8 +238,9 @@ TEST_P(HlslPostProcessOnGl, GivesTheGlslPostProcessImage) {
     extensions = " -DRSAA_SPLIT_CAP=2.5 -DRSAA_MULTI_SURFACE_NEIGHBOURS -DRSAA_SPLIT_CHECK_NEIGHBOURS"
                  " -DRSAA_FETCH_CHECK_NEIGHBOURS";
   }
-  if (GetParam() == 3) {
+  if (GetParam() == 3) {  // with post-pass authentication, which compares materials too
     settings.material_edges = true;
+    settings.auth = 1;
     extensions += " -DRSAA_MATERIAL_EDGES";
   }
   const ResolvedScene resolved(settings, kWidth, kHeight, GetParam() == 3 ? "builtin:coplanar" : "builtin:default");
@@ -398,40 +399,45 @@ class GeneratedShadersOnGl : public test::GlTest {};
 // as rsaa_uniforms.glsl documents it: the image of RsaaPass's post-process (table texture).
 TEST_F(GeneratedShadersOnGl, ThePostFragmentWithItsTableInlinedGivesThePassImage) {
   constexpr int kWidth = 160, kHeight = 120;
-  RsaaSettings settings;
-  settings.auth = 1;
-  const ResolvedScene resolved(settings, kWidth, kHeight);
-  const View& view = resolved.scene.view;
-  const RsaaFrame& frame = resolved.frame;
+  for (const bool material_edges : {false, true}) {  // with them, the primitive target at unit 8
+    RsaaSettings settings;
+    settings.auth = 1;
+    settings.material_edges = material_edges;
+    const ResolvedScene resolved(settings, kWidth, kHeight, material_edges ? "builtin:coplanar" : "builtin:default");
+    const View& view = resolved.scene.view;
+    const RsaaFrame& frame = resolved.frame;
 
-  test::TempDir dir;
-  const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --auth 1");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::string fragment = test::read_text(dir.file("out/rsaa_post.frag"));
-  fragment.erase(0, fragment.find('\n') + 1);  // its #version: make_program writes one
-  const gl::Program program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
-                                                {GL_FRAGMENT_SHADER, fragment}},
-                                               "", "generated rsaa_post.frag");
-  // The block, std140: mat4, viewport, jitter, threshold, subsample, padding, ivec4 per subsample.
-  std::vector<std::int32_t> block(24 + 4 * resolved.pass.pattern().size(), 0);
-  const glm::mat4 inverse = view.inverse_projection();
-  std::memcpy(block.data(), glm::value_ptr(inverse), 64);
-  const float viewport[2] = {float(kWidth), float(kHeight)};
-  std::memcpy(&block[16], viewport, 8);
-  std::memcpy(&block[20], &settings.threshold, 4);
-  for (int i = 0; i < resolved.pass.pattern().size(); ++i) {
-    const PixelStep step = outside_pixel_towards(resolved.pass.pattern().positions[i]);
-    const Vec2 gl_step = pixel_to_gl({double(step.i), double(step.j)});
-    block[24 + 4 * i] = int(gl_step.x), block[24 + 4 * i + 1] = int(gl_step.y);
+    test::TempDir dir;
+    const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --auth 1" +
+                                  (material_edges ? " --material-edges on" : ""));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::string fragment = test::read_text(dir.file("out/rsaa_post.frag"));
+    fragment.erase(0, fragment.find('\n') + 1);  // its #version: make_program writes one
+    const gl::Program program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                                  {GL_FRAGMENT_SHADER, fragment}},
+                                                 "", "generated rsaa_post.frag");
+    // The block, std140: mat4, viewport, jitter, threshold, subsample, padding, ivec4 per subsample.
+    std::vector<std::int32_t> block(24 + 4 * resolved.pass.pattern().size(), 0);
+    const glm::mat4 inverse = view.inverse_projection();
+    std::memcpy(block.data(), glm::value_ptr(inverse), 64);
+    const float viewport[2] = {float(kWidth), float(kHeight)};
+    std::memcpy(&block[16], viewport, 8);
+    std::memcpy(&block[20], &settings.threshold, 4);
+    for (int i = 0; i < resolved.pass.pattern().size(); ++i) {
+      const PixelStep step = outside_pixel_towards(resolved.pass.pattern().positions[i]);
+      const Vec2 gl_step = pixel_to_gl({double(step.i), double(step.j)});
+      block[24 + 4 * i] = int(gl_step.x), block[24 + 4 * i + 1] = int(gl_step.y);
+    }
+    const gl::Buffer buffer = buffer_of(block.data(), block.size() * 4);
+    glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings.uniform_binding), buffer.get());
+    const std::vector<GlName> codes = resolved.pass.code_textures();
+    const gl::Texture output = draw_post_process(
+        program.get(), {frame.colour, frame.centre_normal, frame.centre_depth, 0, codes[0], codes[1], 0, 0,
+                        material_edges ? frame.centre_primitive : 0},
+        kWidth, kHeight, "the generated post-process");
+
+    expect_same_resampled_image(resolved.output.get(), output.get(), frame.colour, kWidth, kHeight, false);
   }
-  const gl::Buffer buffer = buffer_of(block.data(), block.size() * 4);
-  glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings.uniform_binding), buffer.get());
-  const std::vector<GlName> codes = resolved.pass.code_textures();
-  const gl::Texture output =
-      draw_post_process(program.get(), {frame.colour, frame.centre_normal, frame.centre_depth, 0, codes[0], codes[1]},
-                        kWidth, kHeight, "the generated post-process");
-
-  expect_same_resampled_image(resolved.output.get(), output.get(), frame.colour, kWidth, kHeight, false);
 }
 
 }  // namespace

@@ -20,21 +20,10 @@ while [[ $# -gt 0 ]]; do
     *) break ;;
   esac
 done
-[[ $# -gt 0 ]] || { echo "coverage_goals.sh: name at least one scene (builtin:NAME or a model file)" >&2; exit 2; }
-rsaa=./build/rsaa
-[[ -x $rsaa ]] || { echo "coverage_goals.sh: $rsaa is missing: run tools/build.sh first" >&2; exit 2; }
-
-# render NAME OUT [technique options...]: one image; says which command failed.
-render() {
-  local scene=$1 file=$2; shift 2
-  $rsaa render --scene "$scene" --width "$width" --height "$height" "$@" --out "$file" >/dev/null ||
-    { echo "coverage_goals.sh: rsaa render --scene $scene $* failed (exit $?)" >&2; exit 1; }
-}
-psnr() {
-  local text
-  text=$($rsaa compare "$1" "$2") || { echo "coverage_goals.sh: rsaa compare $1 $2 failed" >&2; exit 1; }
-  awk 'NR == 2 {print $2}' <<<"$text"
-}
+script=coverage_goals.sh
+# shellcheck source=tools/scene_images.sh
+source tools/scene_images.sh
+check_scenes_and_build "$@"
 mark() { awk -v v="$1" -v ok="$2" 'BEGIN {printf "%.2f%s", v, (ok ? "" : " !")}'; }
 
 quality=("noaa" "msaa --samples 4" "dyncov" "dcaa" "agaa --samples 8")

@@ -20,21 +20,10 @@ while [[ $# -gt 0 ]]; do
     *) break ;;
   esac
 done
-[[ $# -gt 0 ]] || { echo "rsaa_goals.sh: name at least one scene (builtin:NAME or a model file)" >&2; exit 2; }
-rsaa=./build/rsaa
-[[ -x $rsaa ]] || { echo "rsaa_goals.sh: $rsaa is missing: run tools/build.sh first" >&2; exit 2; }
-
-# render SCENE OUT [technique options...]: one image; says which command failed.
-render() {
-  local scene=$1 file=$2; shift 2
-  $rsaa render --scene "$scene" --width "$width" --height "$height" "$@" --out "$file" >/dev/null ||
-    { echo "rsaa_goals.sh: rsaa render --scene $scene $* failed (exit $?)" >&2; exit 1; }
-}
-psnr() {
-  local text
-  text=$($rsaa compare "$1" "$2") || { echo "rsaa_goals.sh: rsaa compare $1 $2 failed" >&2; exit 1; }
-  awk 'NR == 2 {print $2}' <<<"$text"
-}
+script=rsaa_goals.sh
+# shellcheck source=tools/scene_images.sh
+source tools/scene_images.sh
+check_scenes_and_build "$@"
 
 rows=() summary=()
 for scene in "$@"; do

@@ -48,9 +48,10 @@ int run_render(const RenderArgs& a) {
 Action add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Render one image of a scene with one technique (headless)");
+  std::string builtins;
+  for (const std::string& name : builtin_scene_names()) builtins += (builtins.empty() ? "" : "|") + name;
   cmd->add_option("--scene", args->scene,
-                  "builtin:default|fence|star|edges|distant|interpenetrating|grazing, or a model file "
-                  "assimp reads (OBJ, glTF, PLY, 3DS, ...)")
+                  "builtin:" + builtins + ", or a model file assimp reads (OBJ, glTF, PLY, 3DS, ...)")
       ->capture_default_str();
   add_technique_options(cmd, args->technique);
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();
