@@ -4,10 +4,12 @@
 # crops), the papers' figures, the coverage family's goals on held-out models, the
 # scene-specific tables and the reliability report. Logs go to
 # OUT_DIR/*.md; the pictures the README shows are copied to docs/images/.
-# Usage: tools/readme_figures.sh [--quick] [--only papers] [OUT_DIR]
+# Usage: tools/readme_figures.sh [--quick] [--only papers|cost] [OUT_DIR]
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
 #   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
+#   --only cost: just the timing steps (post-process at 1280x720, the culled pre-pass, how cost
+#            grows, the bench; about 15 minutes), to measure them again on a quiet machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -15,12 +17,14 @@ only=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --quick) quick=1; shift ;;
-    --only) only=${2:?--only needs a step: papers}; shift 2 ;;
+    --only) only=${2:?--only needs a step: papers or cost}; shift 2 ;;
     -h | --help) sed -n 2,9p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
-[[ -z $only || $only == papers ]] || { echo "readme_figures.sh: --only $only: the steps run alone are: papers" >&2; exit 2; }
+[[ -z $only || $only == papers || $only == cost ]] ||
+  { echo "readme_figures.sh: --only $only: the steps run alone are: papers, cost" >&2; exit 2; }
+[[ $only != cost || $quick == 0 ]] || { echo "readme_figures.sh: --only cost has no --quick form" >&2; exit 2; }
 default_out=out/figures
 [[ $quick == 1 ]] && default_out=out/figures-quick
 out=${1:-$default_out}
@@ -44,6 +48,36 @@ papers_figures() {
     cp "$out/papers/$f.png" "docs/images/papers_$f.png"
   done
 }
+# Cost at the sizes engines run (the post-process as multiples of a copy pass), how it grows, the
+# bench: the steps whose figures are timings.
+cost_steps() {
+  step "post-process at 1280x720" post-1280.md
+  $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
+    --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me" \
+    --out-dir "$out/post-1280" >"$out/post-1280.md"
+  step "the culled pre-pass at 1280x720" prepass-cull.md
+  $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
+    --width 1280 --height 720 --frames 3 --orbit-frames 2 \
+    --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me cull" \
+    --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
+  step "how cost grows: image size, triangles, lights" growth.md
+  $rsaa bench --growth --out-dir "$out/growth" \
+    --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
+    >"$out/growth.md"
+  for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
+  step "bench" bench.md
+  $rsaa bench --target-psnr 38 --out-dir "$out/bench" >"$out/bench.md"
+  cp "$out/bench/pareto-default.png" docs/images/bench_pareto_default.png
+  cp "$out/bench/passes-default.png" docs/images/bench_passes_default.png
+  cp "$out/bench/pareto-2CylinderEngine.png" docs/images/bench_pareto_engine.png
+  cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
+  cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
+}
+if [[ $only == cost ]]; then
+  cost_steps
+  echo "the timing steps done in $((SECONDS - started)) s" >&2
+  exit 0
+fi
 if [[ $only == papers ]]; then
   papers_figures
   echo "the papers' figures done in $((SECONDS - started)) s" >&2
@@ -139,28 +173,7 @@ step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)"
   $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
     --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
     --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
-# Cost at the sizes engines run (the post-process as multiples of a copy pass) and how it grows.
-step "post-process at 1280x720" post-1280.md
-$rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me" \
-  --out-dir "$out/post-1280" >"$out/post-1280.md"
-step "the culled pre-pass at 1280x720" prepass-cull.md
-$rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
-  --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-  --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me cull" \
-  --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
-step "how cost grows: image size, triangles, lights" growth.md
-$rsaa bench --growth --out-dir "$out/growth" \
-  --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
-  >"$out/growth.md"
-for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
-step "bench" bench.md
-$rsaa bench --target-psnr 38 --out-dir "$out/bench" >"$out/bench.md"
-cp "$out/bench/pareto-default.png" docs/images/bench_pareto_default.png
-cp "$out/bench/passes-default.png" docs/images/bench_passes_default.png
-cp "$out/bench/pareto-2CylinderEngine.png" docs/images/bench_pareto_engine.png
-cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
-cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
+cost_steps
 papers_figures
 # The coverage family's goals and the scale test on held-out models (issue 14; about 16 minutes).
 step "coverage goals on held-out models" coverage-goals.md
