@@ -17,7 +17,7 @@ techniques=(
   "noaa" "msaa --samples 4" "ssaa --samples 8" "ssaa --samples 16" "dyncov" "dcaa" "agaa --samples 4" "agaa --samples 8"
 )
 # The paper's variants: its split and its single fetch (ours are the defaults).
-paper="--split-cap 0 --multi-surface fetch --split-check off --fetch-check off"
+paper="--split-cap 0 --multi-surface fetch --split-check off --fetch-check off --material-edges off"
 for samples in 4 8; do
   for similarity in sadp depth; do
     for auth in 0 1 2; do

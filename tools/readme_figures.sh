@@ -135,7 +135,8 @@ for scene in builtin:default "$engine" builtin:grazing; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}
   # Before (the paper's SADP, then sadp-plane, each with the paper's resolve) and after (the defaults).
   for variant in sadp sadp-plane defaults; do
-    options=(--similarity "$variant" --auth 0 --split-cap 0 --multi-surface fetch --split-check off --fetch-check off)
+    options=(--similarity "$variant" --auth 0 --split-cap 0 --multi-surface fetch --split-check off --fetch-check off
+             --material-edges off)
     [ "$variant" = defaults ] && options=()
     step "diagnosis, $name, $variant" "diagnosis/$name-$variant.md"
     $rsaa diagnose --scene "$scene" "${options[@]}" --out-dir "$out/diagnosis/$name-$variant" \
