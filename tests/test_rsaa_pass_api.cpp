@@ -96,7 +96,7 @@ TEST_F(RsaaPassApi, ACallbackDrawingWithAnotherProgramIsAnError) {
 
 // An engine's pre-pass program: its own vertex stage (the scene's attribute 0 and camera, no
 // geometry stage) with rsaa_jitter(), and a fragment stage calling rsaa_prepass_code() with the
-// face normal from derivatives.
+// face normal from derivatives (and, with material edges, the draw's material).
 gl::Program engine_prepass_program(const RsaaPass& pass) {
   const std::string prepass = pass.prepass_glsl();
   const std::string vertex = "#define RSAA_INCLUDE_FS 0\n" + prepass + R"(
@@ -110,11 +110,15 @@ void main() {
 })";
   const std::string fragment = prepass + R"(
 in vec3 v_view_position;
-uniform uint u_primitive_base;
+uniform uint u_primitive_base, u_material;
 layout(location = 0) out uvec4 o_code;
 void main() {
-  o_code = rsaa_prepass_code(v_view_position, rsaa_face_normal(v_view_position),
-                             u_primitive_base + uint(gl_PrimitiveID) + 1u);
+  uint primitive = u_primitive_base + uint(gl_PrimitiveID) + 1u;
+#ifdef RSAA_MATERIAL_EDGES
+  o_code = rsaa_prepass_code(v_view_position, rsaa_face_normal(v_view_position), primitive, u_material);
+#else
+  o_code = rsaa_prepass_code(v_view_position, rsaa_face_normal(v_view_position), primitive);
+#endif
 })";
   return gl::make_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "", "engine pre-pass");
 }
@@ -125,7 +129,7 @@ struct MaskRun {
   std::uint32_t all_similar;
 };
 MaskRun masks_both_ways(const std::string& scene_name, RsaaSettings settings, int width, int height) {
-  const test::SceneFrame scene(scene_name, width, height);
+  const test::SceneFrame scene(scene_name, width, height, settings.material_edges);
   settings.output_mask = true;
   RsaaPass pass(settings, width, height);
   const RsaaFrame frame = scene.frame();
@@ -150,9 +154,12 @@ TEST_F(RsaaPassApi, AnEnginesOwnShadersGiveThePassProgramsMasks) {
   RsaaSettings multisample;
   multisample.pattern = "gl4x";
   multisample.prepass = "msaa";
+  RsaaSettings material;  // the engine's own shaders pass the draw's material
+  material.material_edges = true;
   for (const auto& [scene, settings] : {std::pair{"builtin:default", RsaaSettings{}},
                                         std::pair{"builtin:edges", RsaaSettings{}},
-                                        std::pair{"builtin:default", multisample}}) {
+                                        std::pair{"builtin:default", multisample},
+                                        std::pair{"builtin:coplanar", material}}) {
     const MaskRun run = masks_both_ways(scene, settings, 160, 120);
     int edges = 0, differing = 0;
     for (std::size_t i = 0; i < run.own_program.size(); ++i) {
