@@ -91,14 +91,21 @@ vec3 rsaa_post_position(ivec2 pixel) {
 layout(binding = RSAA_POST_FIRST_UNIT + 8) uniform usampler2D rsaa_post_centre_primitive;  // RG32UI
 #endif
 
-// The similarity of the surfaces at the centres of pixels a and b (positions and normals given),
-// on the scale of the pre-pass codes: with material edges, two materials are as different as a
-// code can say, as the pre-pass writes them.
-float rsaa_centres_similarity(ivec2 a, vec3 a_position, vec3 a_normal, ivec2 b, vec3 b_position, vec3 b_normal) {
+// The material at a pixel's centre (material edges), else one material for all.
+uint rsaa_post_material(ivec2 pixel) {
 #ifdef RSAA_MATERIAL_EDGES
-  if (texelFetch(rsaa_post_centre_primitive, a, 0).y != texelFetch(rsaa_post_centre_primitive, b, 0).y)
-    return rsaa_decode_similarity(RSAA_CODE_MAX, true);
+  return texelFetch(rsaa_post_centre_primitive, pixel, 0).y;
+#else
+  return 0u;
 #endif
+}
+
+// The similarity of the surfaces at two pixel centres (materials, positions and normals given),
+// on the scale of the pre-pass codes: two materials are as different as a code can say, as the
+// pre-pass writes them.
+float rsaa_centres_similarity(uint a_material, vec3 a_position, vec3 a_normal, uint b_material, vec3 b_position,
+                              vec3 b_normal) {
+  if (a_material != b_material) return rsaa_decode_similarity(RSAA_CODE_MAX, true);
   return rsaa_similarity(a_position, a_normal, b_position, b_normal);
 }
 
@@ -113,6 +120,7 @@ struct RsaaOutside {
   ivec2 pixel[RSAA_SAMPLE_COUNT];
   uvec2 normal[RSAA_SAMPLE_COUNT];     // encoded: (0, 0) is the background
   vec3 position[RSAA_SAMPLE_COUNT];    // view space
+  uint material[RSAA_SAMPLE_COUNT];    // rsaa_post_material()
   // rsaa_centres_similarity(centre, outside pixel): meaningful where both show a surface.
   float similarity[RSAA_SAMPLE_COUNT];
 };
@@ -120,11 +128,13 @@ struct RsaaOutside {
 RsaaOutside rsaa_outside_pixels(ivec2 pixel, vec3 position, vec3 normal) {
   RsaaOutside o;
   ivec2 last = ivec2(rsaa_viewport) - 1;
+  uint material = rsaa_post_material(pixel);
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     o.pixel[i] = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
     o.normal[i] = texelFetch(rsaa_post_centre_normal, o.pixel[i], 0).xy;
     o.position[i] = rsaa_post_position(o.pixel[i]);
-    o.similarity[i] = rsaa_centres_similarity(pixel, position, normal, o.pixel[i], o.position[i],
+    o.material[i] = rsaa_post_material(o.pixel[i]);
+    o.similarity[i] = rsaa_centres_similarity(material, position, normal, o.material[i], o.position[i],
                                               rsaa_decode_normal(o.normal[i]));
   }
   return o;
@@ -217,8 +227,8 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   bool three = false;
   for (uint rest = outside & ~(1u << uint(first)); rest != 0u; rest &= rest - 1u) {
     int i = findLSB(rest);
-    float t = rsaa_centres_similarity(first_pixel, first_position, first_decoded, o.pixel[i], o.position[i],
-                                     rsaa_decode_normal(o.normal[i]));
+    float t = rsaa_centres_similarity(o.material[first], first_position, first_decoded, o.material[i],
+                                      o.position[i], rsaa_decode_normal(o.normal[i]));
     three = three || rsaa_centres_differ(first_pixel, first_normal, o.pixel[i], o.normal[i], t);
   }
   if (!three) return false;

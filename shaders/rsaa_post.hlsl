@@ -147,13 +147,19 @@ float RsaaDecodeSimilarity(uint code, bool centre_is_surface) {
 #endif
 }
 
-// rsaa_post.glsl's rsaa_centres_similarity: the similarity of the surfaces at the centres of
-// pixels a and b; with material edges, two materials compare as the largest code.
-float RsaaCentresSimilarity(int2 a, float3 a_position, float3 a_normal, int2 b, float3 b_position, float3 b_normal) {
+// rsaa_post.glsl's rsaa_post_material and rsaa_centres_similarity: two materials compare as the
+// largest code.
+uint RsaaMaterial(int2 pixel) {
 #ifdef RSAA_MATERIAL_EDGES
-  if (rsaa_centre_primitive.Load(int3(a, 0)).y != rsaa_centre_primitive.Load(int3(b, 0)).y)
-    return RsaaDecodeSimilarity(RSAA_CODE_MAX, true);
+  return rsaa_centre_primitive.Load(int3(pixel, 0)).y;
+#else
+  return 0u;
 #endif
+}
+
+float RsaaCentresSimilarity(uint a_material, float3 a_position, float3 a_normal, uint b_material, float3 b_position,
+                            float3 b_normal) {
+  if (a_material != b_material) return RsaaDecodeSimilarity(RSAA_CODE_MAX, true);
   return RsaaSimilarity(a_position, a_normal, b_position, b_normal);
 }
 
@@ -175,16 +181,19 @@ struct RsaaOutside {
   int2 pixel[RSAA_SAMPLE_COUNT];
   uint2 normal[RSAA_SAMPLE_COUNT];
   float3 position[RSAA_SAMPLE_COUNT];
+  uint material[RSAA_SAMPLE_COUNT];
   float similarity[RSAA_SAMPLE_COUNT];  // RsaaCentresSimilarity(centre, outside pixel)
 };
 
 RsaaOutside RsaaOutsidePixels(int2 pixel, float3 position, float3 normal) {
   RsaaOutside o;
+  uint material = RsaaMaterial(pixel);
   [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     o.pixel[i] = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[i]), int2(0, 0), int2(rsaa_viewport) - 1);
     o.normal[i] = rsaa_centre_normal.Load(int3(o.pixel[i], 0));
     o.position[i] = RsaaViewPosition(o.pixel[i]);
-    o.similarity[i] = RsaaCentresSimilarity(pixel, position, normal, o.pixel[i], o.position[i],
+    o.material[i] = RsaaMaterial(o.pixel[i]);
+    o.similarity[i] = RsaaCentresSimilarity(material, position, normal, o.material[i], o.position[i],
                                             RsaaDecodeNormal(o.normal[i]));
   }
   return o;
@@ -248,7 +257,7 @@ bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask,
   bool three = false;
   [unroll] for (int j = 0; j < RSAA_SAMPLE_COUNT; ++j) {
     if ((outside & (1u << j)) == 0u || j == first) continue;
-    float t = RsaaCentresSimilarity(first_pixel, first_position, first_decoded, o.pixel[j], o.position[j],
+    float t = RsaaCentresSimilarity(o.material[first], first_position, first_decoded, o.material[j], o.position[j],
                                     RsaaDecodeNormal(o.normal[j]));
     three = three || RsaaCentresDiffer(first_pixel, first_normal, o.pixel[j], o.normal[j], t);
   }
