@@ -245,6 +245,44 @@ SavedState::~SavedState() {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw_framebuffer_));
 }
 
+SavedComputeState::SavedComputeState(std::vector<int> storage_bindings, std::vector<int> image_units) {
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &generic_storage_buffer_);
+  glGetIntegerv(GL_DISPATCH_INDIRECT_BUFFER_BINDING, &dispatch_indirect_buffer_);
+  for (int binding : storage_bindings) {
+    StorageBuffer b{binding, 0, 0, 0};
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, GLuint(binding), &b.buffer);
+    glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, GLuint(binding), &b.start);
+    glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, GLuint(binding), &b.size);
+    storage_buffers_.push_back(b);
+  }
+  for (int unit : image_units) {
+    ImageUnit i{unit, 0, 0, 0, GL_READ_ONLY, GL_R8, GL_FALSE};
+    glGetIntegeri_v(GL_IMAGE_BINDING_NAME, GLuint(unit), &i.texture);
+    glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, GLuint(unit), &i.level);
+    glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, GLuint(unit), &i.layer);
+    glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, GLuint(unit), &i.access);
+    glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, GLuint(unit), &i.format);
+    glGetBooleani_v(GL_IMAGE_BINDING_LAYERED, GLuint(unit), &i.layered);
+    images_.push_back(i);
+  }
+}
+
+SavedComputeState::~SavedComputeState() {
+  for (const StorageBuffer& b : storage_buffers_) {
+    // A range of size 0 was bound whole (glBindBufferBase) or not at all.
+    if (b.buffer != 0 && b.size > 0)
+      glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(b.binding), GLuint(b.buffer), GLintptr(b.start),
+                        GLsizeiptr(b.size));
+    else
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b.binding), GLuint(b.buffer));
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(generic_storage_buffer_));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, GLuint(dispatch_indirect_buffer_));
+  for (const ImageUnit& i : images_)
+    glBindImageTexture(GLuint(i.unit), GLuint(i.texture), i.level, i.layered, i.layer, GLenum(i.access),
+                       GLenum(i.format));
+}
+
 void set_pass_state(bool depth_test) {
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_CULL_FACE);

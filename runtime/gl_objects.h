@@ -132,6 +132,32 @@ class SavedState {
   std::vector<UniformBuffer> uniform_buffers_;
 };
 
+// Saves and restores what a compute pass changes beside SavedState: the shader storage buffers
+// at `storage_bindings` (and the generic GL_SHADER_STORAGE_BUFFER binding), the images bound to
+// `image_units` and the GL_DISPATCH_INDIRECT_BUFFER binding.
+class SavedComputeState {
+ public:
+  SavedComputeState(std::vector<int> storage_bindings, std::vector<int> image_units);
+  ~SavedComputeState();
+  SavedComputeState(const SavedComputeState&) = delete;
+  SavedComputeState& operator=(const SavedComputeState&) = delete;
+
+ private:
+  struct StorageBuffer {
+    int binding;
+    GLint buffer;
+    GLint64 start, size;
+  };
+  struct ImageUnit {
+    int unit;
+    GLint texture, level, layer, access, format;
+    GLboolean layered;
+  };
+  GLint generic_storage_buffer_ = 0, dispatch_indirect_buffer_ = 0;
+  std::vector<StorageBuffer> storage_buffers_;
+  std::vector<ImageUnit> images_;
+};
+
 // The state a pass draws with, whatever the engine left: clears and writes reach every pixel
 // (no scissor, all masks on, no culling, filled polygons, no rasterizer discard, no polygon
 // offset), no blending, no stencil test, depth range [0, 1], depth test on (GL_LESS) or off.

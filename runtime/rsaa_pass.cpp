@@ -48,6 +48,10 @@ struct RsaaPass::Objects {
   gl::Program edge_program;
   gl::Texture edge_depth;
   gl::CachedFramebuffer edge_target;
+  // The compute post-process (RsaaSettings::post "compute"): the classify program lists the edge
+  // pixels in `edge_list` (rsaa_post_list.glsl), the resolve program runs on the listed pixels.
+  gl::Program classify_program, list_resolve_program;
+  gl::Buffer edge_list;
 };
 
 namespace {
@@ -80,6 +84,8 @@ static_assert(offsetof(RsaaUniformHead, sample_shift) - kJitterOffset == offseto
 constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, kFirstCodeUnit = 4,
               kPrimitiveUnit = 8;
 constexpr int kPostUnits = 9;
+// The compute post-process's shader storage binding (the edge list) and image units (output, mask).
+constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
 static_assert(kFirstCodeUnit + (kMaxTableSamples + 3) / 4 <= kPrimitiveUnit, "code units overlap the primitive's");
 
 // The table the pass uses: the settings' own, or the built-in one of the pattern named.
@@ -380,8 +386,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   gl_->table = table_texture(table);
 
   const int n = pattern_.size();
-  if (settings.post != "edges" && settings.post != "single")
-    throw std::invalid_argument("RSAA post '" + settings.post + "' is not one of edges, single");
+  if (settings.post != "edges" && settings.post != "single" && settings.post != "compute")
+    throw std::invalid_argument("RSAA post '" + settings.post + "' is not one of edges, compute, single");
   if (settings.prepass != "jittered" && settings.prepass != "msaa")
     throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
   if (settings.prepass_cull != "off" && settings.prepass_cull != "neighbours")
@@ -452,6 +458,19 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                          defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
                                          "RSAA post-process edge pass");
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
+  }
+  if (settings.post == "compute") {
+    const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
+                                     "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
+    gl_->classify_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
+                                             post_defines, "RSAA post-process edge list");
+    gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
+                                                 post_defines, "RSAA post-process resolve of the edge list");
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    gl_->edge_list = gl::Buffer(buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(4 * (4 + std::size_t(width) * std::size_t(height))), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
   }
   gl::check("creating the RSAA pass");
 }
@@ -665,11 +684,47 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     glDepthFunc(GL_GEQUAL);
     glDepthMask(GL_FALSE);
   }
+  if (settings_.post == "compute") {
+    resolve_edge_list(frame, output, mask_output);
+    gl::check("RSAA post-process");
+    return;
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glUseProgram(gl_->post_program.get());
   draw_fullscreen_triangle();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   gl::check("RSAA post-process");
+}
+
+// The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
+// list of the pixels whose mask is not all-similar (rsaa_post_classify.comp), then the resolve on
+// the listed pixels only (rsaa_post_resolve.comp), its group count taken from the list
+// (glDispatchComputeIndirect). On a driver that runs a SIMD batch's branches both ways (llvmpipe)
+// the edge pass and depth test of "edges" still run the resolve for whole batches around each
+// edge pixel; here every lane holds one (README, *Cheaper post-processes*).
+void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
+  const gl::SavedComputeState saved({kEdgeListBinding}, {kOutputImageUnit, kMaskImageUnit});
+  glCopyImageSubData(frame.colour, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, frame.width,
+                     frame.height, 1);
+  if (settings_.output_mask) {
+    const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);
+    glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
+  }
+  // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
+  const GLuint empty_list[4] = {0, 1, 1, 0};
+  glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
+  glUseProgram(gl_->classify_program.get());
+  glDispatchCompute(GLuint(frame.width + 7) / 8, GLuint(frame.height + 7) / 8, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  if (settings_.output_mask)
+    glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+  glUseProgram(gl_->list_resolve_program.get());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
+  glDispatchComputeIndirect(0);
+  // The engine reads the output next, by any path (texture, framebuffer, copy, image).
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
 }  // namespace rsaa

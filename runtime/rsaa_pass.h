@@ -166,12 +166,15 @@ struct RsaaSettings {
   // feature thinner than a pixel that covers no centre of the neighbourhood is missed (README:
   // "Culling the pre-pass"). Needs the jittered pre-pass.
   std::string prepass_cull = "off";
-  // How resolve() runs the post-process: "edges" (default) in two passes after a copy of the
-  // colour image, an edge pass that marks in a depth target the pixels whose mask is not
-  // all-similar, then the resolve only there (an early depth test skips the rest: a driver that executes both
-  // sides of a branch for a whole SIMD batch, as Mesa llvmpipe, pays only for edge pixels);
-  // "single": one pass over every pixel. Both give the same image (tests compare them).
-  std::string post = "edges";
+  // How resolve() runs the post-process, always the same image (tests compare them): "compute"
+  // (default) copies the colour image, lists the pixels whose mask is not all-similar with a
+  // compute shader, then resolves the listed pixels only (a second, indirect dispatch; it binds
+  // shader storage buffer 0 and image units 0 and 1 meanwhile, restored after); "edges" copies,
+  // then an edge pass marks those pixels in a depth target and the resolve runs behind an early
+  // depth test (a driver that executes both sides of a branch for a whole SIMD batch, as Mesa
+  // llvmpipe, pays for every batch that holds an edge pixel; the list pays per edge pixel);
+  // "single": one pass over every pixel. README, *Cheaper post-processes*.
+  std::string post = "compute";
   // The frame's depth convention: "gl" | "zero-to-one" | "reverse-z" (DEPTH CONVENTION above).
   std::string depth = "gl";
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
@@ -262,6 +265,7 @@ class RsaaPass {
  private:
   struct Objects;  // GL objects, defined in rsaa_pass.cpp
   void write_frame_uniforms(const RsaaFrame& frame) const;
+  void resolve_edge_list(const RsaaFrame& frame, GlName output, GlName mask_output);
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
   RsaaSettings settings_;

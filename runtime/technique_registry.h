@@ -32,7 +32,7 @@ struct TechniqueOptions {
   std::string fetch_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string material_edges = "on";         // rsaa: on (default: the renderer knows each draw's
                                              // material) | off (geometry only, the paper's)
-  std::string post = "edges";        // rsaa: edges (two passes) | single (RsaaSettings::post)
+  std::string post = "compute";      // rsaa: compute (edge list) | edges (two passes) | single (RsaaSettings::post)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
                                      // paper's 0.1); 0: relative, agaa_k_pixels footprints

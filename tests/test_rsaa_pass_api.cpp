@@ -283,6 +283,12 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glStencilFunc(GL_NEVER, 7, 0x0Fu);
   glStencilOp(GL_INCR, GL_DECR, GL_INVERT);
   glStencilMask(0x3u);
+  // Compute state the default post-process ("compute") binds: an image on its units, a storage
+  // buffer range at its binding, an indirect-dispatch buffer.
+  glBindImageTexture(0, engine_texture.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
+  glBindImageTexture(1, engine_texture.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, engine_buffer.get(), 64, 128);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, engine_buffer.get());
 
   RsaaSettings settings;
   settings.prepass_cull = "neighbours";  // the pass's stencil state too
@@ -350,6 +356,25 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(stencil_value_mask, 0x0F);
   EXPECT_EQ(stencil_fail, GL_INCR);
   EXPECT_EQ(stencil_writemask, 0x3);
+  ASSERT_EQ(settings.post, "compute");
+  GLint image0 = 0, image1 = 0, image0_access = 0, image1_format = 0, storage = 0, indirect = 0;
+  GLint64 storage_start = 0, storage_size = 0;
+  glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 0, &image0);
+  glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, 0, &image0_access);
+  glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 1, &image1);
+  glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, 1, &image1_format);
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &storage);
+  glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, 0, &storage_start);
+  glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, 0, &storage_size);
+  glGetIntegerv(GL_DISPATCH_INDIRECT_BUFFER_BINDING, &indirect);
+  EXPECT_EQ(GLuint(image0), engine_texture.get());
+  EXPECT_EQ(image0_access, GL_READ_ONLY);
+  EXPECT_EQ(GLuint(image1), engine_texture.get());
+  EXPECT_EQ(image1_format, GL_RGBA8);
+  EXPECT_EQ(GLuint(storage), engine_buffer.get());
+  EXPECT_EQ(storage_start, 64);
+  EXPECT_EQ(storage_size, 128);
+  EXPECT_EQ(GLuint(indirect), engine_buffer.get());
 
   // The engine's state did not reach the pass: the same frame without it gives the same image.
   glDisable(GL_SCISSOR_TEST);
@@ -443,10 +468,11 @@ TEST_F(RsaaPassApi, TheColoursMinificationFilterDoesNotMatter) {
   EXPECT_GT(resampled, 20);
 }
 
-// The two-pass post-process (an edge pass, then the resolve where it marked a pixel) gives the
-// single pass's image and masks, bit for bit, for the default options and the paper's resolve
-// with each authentication, on scenes with silhouettes, thin parts and many small triangles.
-TEST_F(RsaaPassApi, TheEdgePassGivesTheSinglePassImageAndMasks) {
+// The two-pass post-process (an edge pass, then the resolve where it marked a pixel) and the
+// compute one (a list of edge pixels, then the resolve on the list) give the single pass's image
+// and masks, bit for bit, for the default options and the paper's resolve with each
+// authentication, on scenes with silhouettes, thin parts and many small triangles.
+TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
   constexpr int width = 160, height = 120;
   for (const char* scene_name : {"builtin:default", "builtin:fence", "builtin:interpenetrating"}) {
     const test::SceneFrame scene(scene_name, width, height);
@@ -463,7 +489,8 @@ TEST_F(RsaaPassApi, TheEdgePassGivesTheSinglePassImageAndMasks) {
       settings.output_mask = true;
       std::vector<Image> images;
       std::vector<std::vector<std::uint32_t>> masks;
-      for (const char* post : {"single", "edges"}) {
+      const std::vector<std::string> posts = {"single", "edges", "compute"};
+      for (const std::string& post : posts) {
         settings.post = post;
         RsaaPass pass(settings, width, height);
         scene.render_subsamples(pass);
@@ -474,18 +501,20 @@ TEST_F(RsaaPassApi, TheEdgePassGivesTheSinglePassImageAndMasks) {
         masks.push_back(read_back_uints(mask.get(), width, height));
       }
       const std::uint32_t all_similar = (1u << (settings.pattern == "d3d4x" ? 4 : 8)) - 1u;
-      int edges = 0, differing_colour = 0, differing_mask = 0;
-      for (std::size_t p = 0; p < masks[0].size(); ++p) {
-        edges += masks[0][p] != all_similar;
-        differing_mask += masks[0][p] != masks[1][p];
-        const Rgb a = images[0].pixels[p], b = images[1].pixels[p];
-        differing_colour += a.r != b.r || a.g != b.g || a.b != b.b;
+      for (std::size_t k = 1; k < posts.size(); ++k) {
+        int edges = 0, differing_colour = 0, differing_mask = 0;
+        for (std::size_t p = 0; p < masks[0].size(); ++p) {
+          edges += masks[0][p] != all_similar;
+          differing_mask += masks[0][p] != masks[k][p];
+          const Rgb a = images[0].pixels[p], b = images[k].pixels[p];
+          differing_colour += a.r != b.r || a.g != b.g || a.b != b.b;
+        }
+        SCOPED_TRACE(std::string(scene_name) + " " + settings.pattern + " " + settings.similarity + " auth " +
+                     std::to_string(settings.auth) + " " + settings.multi_surface + " post " + posts[k]);
+        EXPECT_GT(edges, 100);  // the comparison covers resolved pixels
+        EXPECT_EQ(differing_mask, 0);
+        EXPECT_EQ(differing_colour, 0);
       }
-      SCOPED_TRACE(std::string(scene_name) + " " + settings.pattern + " " + settings.similarity + " auth " +
-                   std::to_string(settings.auth) + " " + settings.multi_surface);
-      EXPECT_GT(edges, 100);  // the comparison covers resolved pixels
-      EXPECT_EQ(differing_mask, 0);
-      EXPECT_EQ(differing_colour, 0);
     }
   }
 }

@@ -53,7 +53,7 @@ papers_figures() {
 cost_steps() {
   step "post-process at 1280x720" post-1280.md
   $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-    --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me" \
+    --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me edges-pass,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me" \
     --out-dir "$out/post-1280" >"$out/post-1280.md"
   step "the culled pre-pass at 1280x720" prepass-cull.md
   $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \

@@ -114,7 +114,8 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --fetch-check must be off or neighbours, not '" + o.fetch_check + "'");
   if (o.material_edges != "off" && o.material_edges != "on")
     bad("rsaa --material-edges must be off or on, not '" + o.material_edges + "'");
-  if (o.post != "edges" && o.post != "single") bad("rsaa --post must be edges or single, not '" + o.post + "'");
+  if (o.post != "edges" && o.post != "compute" && o.post != "single")
+    bad("rsaa --post must be edges, compute or single, not '" + o.post + "'");
 }
 
 // " cap1.5 ms sc fc me": the options beyond the paper, when used.
@@ -125,7 +126,7 @@ std::string rsaa_extension_label(const TechniqueOptions& o) {
   if (o.split_check != "off") label << " sc";
   if (o.fetch_check != "off") label << " fc";
   if (o.material_edges != "off") label << " me";
-  if (o.post != "edges") label << " " << o.post << "-pass";
+  if (o.post != "compute") label << " " << o.post << "-pass";
   if (o.prepass_cull != "off") label << " cull";
   return label.str();
 }

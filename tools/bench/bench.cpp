@@ -77,6 +77,11 @@ std::vector<TechniqueOptions> default_techniques() {
   TechniqueOptions single_pass = technique_options("rsaa", 8);
   single_pass.post = "single";
   list.push_back(single_pass);
+  // The defaults' post-process as an edge pass and a depth-tested resolve (the default before the
+  // edge list; same image).
+  TechniqueOptions edge_pass = technique_options("rsaa", 8);
+  edge_pass.post = "edges";
+  list.push_back(edge_pass);
   // The defaults with the culled jittered pre-pass, beside the full one (same masks but where
   // features thinner than a pixel slip between pixel centres).
   TechniqueOptions culled = technique_options("rsaa", 8);

@@ -65,8 +65,9 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "material than the centre's is dissimilar: colour edges between coplanar parts)")
       ->capture_default_str();
   cmd->add_option("--post", o.post,
-                  "rsaa post-process: edges (an edge pass marks the pixels to resolve, the resolve runs only "
-                  "there) | single (one pass over every pixel); the same image")
+                  "rsaa post-process: compute (a compute shader lists the pixels to resolve, the resolve runs "
+                  "on the list) | edges (an edge pass marks them in a depth target, the resolve runs behind "
+                  "a depth test) | single (one pass over every pixel); the same image")
       ->capture_default_str();
   cmd->add_option("--code-bits", o.code_bits, "rsaa bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
