@@ -50,7 +50,7 @@ struct RsaaPass::Objects {
   gl::CachedFramebuffer edge_target;
   // The compute post-process (RsaaSettings::post "compute"): the classify program lists the edge
   // pixels in `edge_list` (rsaa_post_list.glsl), the resolve program runs on the listed pixels.
-  gl::Program classify_program, list_resolve_program;
+  gl::Program classify_program, list_size_program, list_resolve_program;
   gl::Buffer edge_list;
 };
 
@@ -460,10 +460,16 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
   }
   if (settings.post == "compute") {
+    // The list packs a pixel's x and y into 16 bits each.
+    if (width > 65536 || height > 65536)
+      throw std::invalid_argument("RSAA post compute: " + std::to_string(width) + "x" + std::to_string(height) +
+                                  " is larger than the edge list's 65536 x 65536 (use post edges)");
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
                                      "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
     gl_->classify_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
                                              post_defines, "RSAA post-process edge list");
+    gl_->list_size_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_list_size.comp")}},
+                                              post_defines, "RSAA post-process edge list size");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
                                                  post_defines, "RSAA post-process resolve of the edge list");
     GLuint buffer = 0;
@@ -697,9 +703,9 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
 }
 
 // The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
-// list of the pixels whose mask is not all-similar (rsaa_post_classify.comp), then the resolve on
-// the listed pixels only (rsaa_post_resolve.comp), its group count taken from the list
-// (glDispatchComputeIndirect). On a driver that runs a SIMD batch's branches both ways (llvmpipe)
+// list of the pixels whose mask is not all-similar (rsaa_post_classify.comp), its dispatch size
+// (rsaa_post_list_size.comp), then the resolve on the listed pixels only (rsaa_post_resolve.comp,
+// glDispatchComputeIndirect). On a driver that runs a SIMD batch's branches both ways (llvmpipe)
 // the edge pass and depth test of "edges" still run the resolve for whole batches around each
 // edge pixel; here every lane holds one (README, *Cheaper post-processes*).
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
@@ -716,6 +722,9 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
   glUseProgram(gl_->classify_program.get());
   glDispatchCompute(GLuint(frame.width + 7) / 8, GLuint(frame.height + 7) / 8, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(gl_->list_size_program.get());
+  glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   if (settings_.output_mask)

@@ -1,9 +1,10 @@
 // The edge list of RsaaPass's compute post-process (RsaaSettings::post = "compute"): one
 // invocation per pixel appends the pixels where rsaa_resolve() does more than keep the colour
-// (rsaa_pixel_has_edge()) to a list, and keeps the list's dispatch size up to date. The resolve
-// (rsaa_post_resolve.comp) then runs on the listed pixels only, every SIMD lane on an edge pixel:
-// the edge pass + depth test of the "edges" post-process skips edge-free SIMD batches, but runs
-// a whole batch for one edge pixel in it.
+// (rsaa_pixel_has_edge()) to a list; rsaa_post_list_size.comp then sizes the resolve's dispatch
+// and rsaa_post_resolve.comp runs on the listed pixels only, every SIMD lane on an edge pixel (the
+// edge pass + depth test of the "edges" post-process skips edge-free SIMD batches, but runs a
+// whole batch for one edge pixel in it). One atomic per listed pixel: a group-wide count in shared
+// memory (three barriers) cost more on llvmpipe, which has no subgroup operations.
 #include "rsaa_post.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -15,5 +16,4 @@ void main() {
   if (any(greaterThanEqual(pixel, ivec2(rsaa_viewport))) || !rsaa_pixel_has_edge(pixel)) return;
   uint slot = atomicAdd(rsaa_list_count, 1u);
   rsaa_list_pixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16u);
-  atomicMax(rsaa_list_groups_x, slot / RSAA_RESOLVE_GROUP + 1u);
 }
