@@ -76,9 +76,11 @@
 //
 // GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
 // program, depth test/function/mask, stencil test/functions/operations/masks, blending and
-// colour masks of every draw buffer, scissor test, culling, polygon mode, rasterizer discard, sample shading, the vertex array, the
-// textures and sampler objects bound to units 0-8 and to the pre-pass's three units, and the
-// uniform buffer binding; the engine's scissor, masks, culling and samplers do not reach the
+// colour masks of every draw buffer, scissor test, culling, polygon mode, rasterizer discard,
+// sample shading, the vertex array, the textures and sampler objects bound to units 0-8 and to
+// the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
+// shader storage buffer at binding 0 (and the generic one), image units 0 and 1 and the
+// indirect-dispatch buffer; the engine's scissor, masks, culling and samplers do not reach the
 // pass. (A program the engine deleted while current cannot be restored: none is current after.)
 // Textures and programs they create belong to the RsaaPass object.
 #pragma once
