@@ -52,6 +52,10 @@ struct RsaaPass::Objects {
   // pixels in `edge_list` (rsaa_post_list.glsl), the resolve program runs on the listed pixels.
   gl::Program classify_program, list_size_program, list_resolve_program;
   gl::Buffer edge_list;
+  // Resolving in place (output == the frame's colour): the listed pixels' colours are resolved
+  // into `scratch` (made at the first such call), then copied into the colour by `scatter_program`.
+  gl::Program scatter_program;
+  gl::Texture scratch;
 };
 
 namespace {
@@ -276,7 +280,15 @@ RsaaTargets::RsaaTargets(RsaaTargets&&) noexcept = default;
 RsaaTargets& RsaaTargets::operator=(RsaaTargets&&) noexcept = default;
 
 void RsaaTargets::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get()); }
-GlName RsaaTargets::colour() const { return gl_->colour.get(); }
+GlName RsaaTargets::colour() const { return colour_ ? colour_ : gl_->colour.get(); }
+
+void RsaaTargets::use_colour(GlName colour) {
+  // Attached every call: a deleted texture stays attached to a framebuffer not bound, and its name
+  // may come back as another texture.
+  if (colour) gl::require_texture(colour, GL_RGBA16F, width_, height_, "RsaaTargets::use_colour");
+  colour_ = colour;
+  glNamedFramebufferTexture(gl_->framebuffer.get(), GL_COLOR_ATTACHMENT0, this->colour(), 0);
+}
 
 void RsaaTargets::clear(const float background[3], float far_depth) const {
   const GLfloat colour[4] = {background[0], background[1], background[2], 1.0f};
@@ -289,8 +301,7 @@ void RsaaTargets::clear(const float background[3], float far_depth) const {
 }
 
 RsaaFrame RsaaTargets::frame(const glm::mat4& inverse_projection) const {
-  return {gl_->colour.get(), gl_->normal.get(), gl_->primitive.get(), gl_->depth.get(),
-          width_, height_, inverse_projection};
+  return {colour(), gl_->normal.get(), gl_->primitive.get(), gl_->depth.get(), width_, height_, inverse_projection};
 }
 
 SamplePattern query_gl_sample_pattern(int samples) {
@@ -470,6 +481,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                              post_defines, "RSAA post-process edge list");
     gl_->list_size_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_list_size.comp")}},
                                               post_defines, "RSAA post-process edge list size");
+    gl_->scatter_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_scatter.comp")}},
+                                            post_defines, "RSAA post-process in place");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
                                                  post_defines, "RSAA post-process resolve of the edge list");
     GLuint buffer = 0;
@@ -644,6 +657,10 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
   if (settings_.output_mask && mask_output)
     gl::require_texture(mask_output, GL_R32UI, width_, height_, "RsaaPass::resolve mask_output");
+  if (output == frame.colour && settings_.post != "compute")
+    throw std::invalid_argument("RsaaPass::resolve: the output is the frame's colour texture; resolving in place needs "
+                                "RsaaSettings::post \"compute\", not \"" + settings_.post +
+                                "\" (which reads the colour while it writes it)");
   std::vector<int> units;
   for (int unit = 0; unit < kPostUnits; ++unit) units.push_back(unit);
   const gl::SavedState saved(units, {settings_.uniform_binding});
@@ -705,13 +722,19 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
 // The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
 // list of the pixels whose mask is not all-similar (rsaa_post_classify.comp), its dispatch size
 // (rsaa_post_list_size.comp), then the resolve on the listed pixels only (rsaa_post_resolve.comp,
-// glDispatchComputeIndirect). On a driver that runs a SIMD batch's branches both ways (llvmpipe)
+// glDispatchComputeIndirect). In place (output == frame.colour) without the copy: the listed
+// pixels are resolved into a scratch image and then copied into the colour
+// (rsaa_post_scatter.comp). On a driver that runs a SIMD batch's branches both ways (llvmpipe)
 // the edge pass and depth test of "edges" still run the resolve for whole batches around each
 // edge pixel; here every lane holds one (README, *Cheaper post-processes*).
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
   const gl::SavedComputeState saved({kEdgeListBinding}, {kOutputImageUnit, kMaskImageUnit});
-  glCopyImageSubData(frame.colour, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, frame.width,
-                     frame.height, 1);
+  // In place, the image already holds every edge-free pixel's colour: no copy.
+  const bool in_place = output == frame.colour;
+  if (!in_place)
+    glCopyImageSubData(frame.colour, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, frame.width,
+                       frame.height, 1);
+  if (in_place && gl_->scratch.get() == 0) gl_->scratch = gl::make_texture_2d(GL_RGBA16F, width_, height_);
   if (settings_.output_mask) {
     const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);
     glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
@@ -726,12 +749,21 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   glUseProgram(gl_->list_size_program.get());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  const GLuint resolved = in_place ? gl_->scratch.get() : output;
+  glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   if (settings_.output_mask)
     glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
   glUseProgram(gl_->list_resolve_program.get());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
   glDispatchComputeIndirect(0);
+  if (in_place) {
+    // Every listed pixel resolved from the 1x colours before any of them is overwritten.
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(kMaskImageUnit, gl_->scratch.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+    glUseProgram(gl_->scatter_program.get());
+    glDispatchComputeIndirect(0);
+  }
   // The engine reads the output next, by any path (texture, framebuffer, copy, image).
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }

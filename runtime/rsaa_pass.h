@@ -221,11 +221,18 @@ class RsaaTargets {
   RsaaFrame frame(const glm::mat4& inverse_projection) const;
   static constexpr double kBytesPerPixel = 8 + 4 + 4 + 4;
   static double bytes_per_pixel(bool material_edges) { return kBytesPerPixel + (material_edges ? 4 : 0); }
+  // The colour texture the 1x frame is drawn into: the targets' own, or the one use_colour() set.
   GlName colour() const;
+  // Draws the colour into `colour` (GL_RGBA16F, this size; 0: the targets' own texture again)
+  // instead, for a frame resolved in place (RsaaPass::resolve with output == frame.colour): the
+  // frame goes straight into the engine's output, without a copy. The resolve needs it filtered
+  // linearly (GL_TEXTURE_MAG_FILTER GL_LINEAR). Throws std::invalid_argument for another format or size.
+  void use_colour(GlName colour);
 
  private:
   struct Objects;  // GL objects, defined in rsaa_pass.cpp
   int width_, height_;
+  GlName colour_ = 0;  // use_colour()'s texture, 0: the targets' own
   std::unique_ptr<Objects> gl_;
 };
 

@@ -519,6 +519,59 @@ TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
   }
 }
 
+// Resolving in place (output == frame.colour, the compute post-process) gives the image and
+// masks of a separate output, bit for bit: every listed pixel is resolved from the 1x colours
+// before any is overwritten. The edge pass and the single pass, which read the colour while they
+// write it, refuse it. A colour drawn into another texture (RsaaTargets::use_colour) is checked.
+TEST_F(RsaaPassApi, ResolvingInPlaceGivesTheSeparateOutputsImage) {
+  constexpr int width = 160, height = 120;
+  for (const char* scene_name : {"builtin:default", "builtin:fence"}) {
+    test::SceneFrame scene(scene_name, width, height);
+    RsaaSettings settings;
+    settings.output_mask = true;
+    RsaaPass pass(settings, width, height);
+    scene.render_subsamples(pass);
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+    const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+    const gl::Texture mask_in_place = gl::make_texture_2d(GL_R32UI, width, height);
+    pass.resolve(scene.frame(), output.get(), mask.get());
+    const Image one_x = read_back_image(scene.frame().colour, width, height);
+    pass.resolve(scene.frame(), scene.frame().colour, mask_in_place.get());
+    const Image separate = read_back_image(output.get(), width, height);
+    const Image in_place = read_back_image(scene.frame().colour, width, height);
+    const std::vector<std::uint32_t> a = read_back_uints(mask.get(), width, height);
+    const std::vector<std::uint32_t> b = read_back_uints(mask_in_place.get(), width, height);
+    int differing = 0, resampled = 0;
+    for (std::size_t p = 0; p < separate.pixels.size(); ++p) {
+      const Rgb x = separate.pixels[p], y = in_place.pixels[p];
+      differing += x.r != y.r || x.g != y.g || x.b != y.b;
+      resampled += x.r != one_x.pixels[p].r || x.g != one_x.pixels[p].g || x.b != one_x.pixels[p].b;
+    }
+    SCOPED_TRACE(scene_name);
+    EXPECT_EQ(differing, 0);
+    EXPECT_EQ(a, b);
+    EXPECT_GT(resampled, 100);  // the comparison covers resolved pixels
+  }
+  const test::SceneFrame scene("builtin:default", width, height);
+  for (const char* post : {"edges", "single"}) {
+    RsaaSettings settings;
+    settings.post = post;
+    RsaaPass pass(settings, width, height);
+    scene.render_subsamples(pass);
+    EXPECT_THROW(pass.resolve(scene.frame(), scene.frame().colour), std::invalid_argument) << post;
+  }
+  RsaaTargets targets(width, height);
+  const gl::Texture wrong_format = gl::make_texture_2d(GL_RGBA8, width, height);
+  const gl::Texture wrong_size = gl::make_texture_2d(GL_RGBA16F, width, height + 1);
+  EXPECT_THROW(targets.use_colour(wrong_format.get()), std::invalid_argument);
+  EXPECT_THROW(targets.use_colour(wrong_size.get()), std::invalid_argument);
+  const gl::Texture own = gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR);
+  targets.use_colour(own.get());
+  EXPECT_EQ(targets.frame(glm::mat4(1.0f)).colour, own.get());
+  targets.use_colour(0);
+  EXPECT_NE(targets.frame(glm::mat4(1.0f)).colour, own.get());
+}
+
 // The edge pass's test (rsaa_pixel_has_edge: the largest and smallest code) against the mask
 // (rsaa_pixel_mask: every subsample decoded, then split), per pixel of the same pre-pass. Too few
 // marked pixels would change the image (the test above); too many would only cost time, and the

@@ -12,9 +12,21 @@ class Rsaa : public Technique {
   Rsaa(const RsaaSettings& settings, int width, int height)
       : pass_(settings, width, height),
         targets_(width, height, settings.material_edges),
-        material_edges_(settings.material_edges) {}
+        material_edges_(settings.material_edges),
+        in_place_(settings.post == "compute") {}
 
   void render(const GpuScene& scene, const View& view, GLuint output) override {
+    // With the compute post-process the frame is drawn into the output and resolved in place (no
+    // copy of the image); the resolve's bilinear fetch needs the output filtered linearly meanwhile.
+    const bool in_place = in_place_;
+    GLint min_filter = GL_LINEAR, mag_filter = GL_LINEAR;
+    if (in_place) {
+      targets_.use_colour(output);
+      glGetTextureParameteriv(output, GL_TEXTURE_MIN_FILTER, &min_filter);
+      glGetTextureParameteriv(output, GL_TEXTURE_MAG_FILTER, &mag_filter);
+      glTextureParameteri(output, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTextureParameteri(output, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
     timer_.begin("main");
     renderer_.draw_gbuffer(scene, view, targets_);
     timer_.end();
@@ -28,6 +40,10 @@ class Rsaa : public Technique {
     timer_.begin("post-process");
     pass_.resolve(frame, output, mask_output_);
     timer_.end();
+    if (in_place) {
+      glTextureParameteri(output, GL_TEXTURE_MIN_FILTER, min_filter);
+      glTextureParameteri(output, GL_TEXTURE_MAG_FILTER, mag_filter);
+    }
   }
 
   double bytes_per_pixel() const override {
@@ -41,7 +57,7 @@ class Rsaa : public Technique {
   SceneRenderer renderer_;
   RsaaTargets targets_;
   GLuint mask_output_ = 0;
-  bool material_edges_;
+  bool material_edges_, in_place_;
 };
 
 }  // namespace
