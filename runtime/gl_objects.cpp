@@ -140,6 +140,23 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
 
 namespace rsaa::gl {
 
+IndexedBufferBinding save_indexed_buffer(GLenum target, int binding) {
+  const bool uniform = target == GL_UNIFORM_BUFFER;
+  IndexedBufferBinding b{target, binding, 0, 0, 0};
+  glGetIntegeri_v(uniform ? GL_UNIFORM_BUFFER_BINDING : GL_SHADER_STORAGE_BUFFER_BINDING, GLuint(binding), &b.buffer);
+  glGetInteger64i_v(uniform ? GL_UNIFORM_BUFFER_START : GL_SHADER_STORAGE_BUFFER_START, GLuint(binding), &b.start);
+  glGetInteger64i_v(uniform ? GL_UNIFORM_BUFFER_SIZE : GL_SHADER_STORAGE_BUFFER_SIZE, GLuint(binding), &b.size);
+  return b;
+}
+
+void restore_indexed_buffer(const IndexedBufferBinding& b) {
+  // A range of size 0 was bound whole (glBindBufferBase) or not at all.
+  if (b.buffer != 0 && b.size > 0)
+    glBindBufferRange(b.target, GLuint(b.binding), GLuint(b.buffer), GLintptr(b.start), GLsizeiptr(b.size));
+  else
+    glBindBufferBase(b.target, GLuint(b.binding), GLuint(b.buffer));
+}
+
 SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_bindings) {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
@@ -189,13 +206,7 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
     textures_.push_back(t);
   }
   glActiveTexture(GLenum(active_texture_));
-  for (int binding : uniform_bindings) {
-    UniformBuffer u{binding, 0, 0, 0};
-    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, GLuint(binding), &u.buffer);
-    glGetInteger64i_v(GL_UNIFORM_BUFFER_START, GLuint(binding), &u.start);
-    glGetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, GLuint(binding), &u.size);
-    uniform_buffers_.push_back(u);
-  }
+  for (int binding : uniform_bindings) uniform_buffers_.push_back(save_indexed_buffer(GL_UNIFORM_BUFFER, binding));
 }
 
 SavedState::~SavedState() {
@@ -207,13 +218,7 @@ SavedState::~SavedState() {
     glBindSampler(GLuint(t.unit), GLuint(t.sampler));
   }
   glActiveTexture(GLenum(active_texture_));
-  for (const UniformBuffer& u : uniform_buffers_) {
-    // A range of size 0 was bound whole (glBindBufferBase) or not at all.
-    if (u.buffer != 0 && u.size > 0)
-      glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(u.binding), GLuint(u.buffer), GLintptr(u.start), GLsizeiptr(u.size));
-    else
-      glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(u.binding), GLuint(u.buffer));
-  }
+  for (const IndexedBufferBinding& u : uniform_buffers_) restore_indexed_buffer(u);
   glBindVertexArray(GLuint(vertex_array_));
   for (GLuint i = 0; i < GLuint(draw_buffers_.size()); ++i) {
     const DrawBufferState& d = draw_buffers_[i];
@@ -248,13 +253,7 @@ SavedState::~SavedState() {
 SavedComputeState::SavedComputeState(std::vector<int> storage_bindings, std::vector<int> image_units) {
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &generic_storage_buffer_);
   glGetIntegerv(GL_DISPATCH_INDIRECT_BUFFER_BINDING, &dispatch_indirect_buffer_);
-  for (int binding : storage_bindings) {
-    StorageBuffer b{binding, 0, 0, 0};
-    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, GLuint(binding), &b.buffer);
-    glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, GLuint(binding), &b.start);
-    glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, GLuint(binding), &b.size);
-    storage_buffers_.push_back(b);
-  }
+  for (int binding : storage_bindings) storage_buffers_.push_back(save_indexed_buffer(GL_SHADER_STORAGE_BUFFER, binding));
   for (int unit : image_units) {
     ImageUnit i{unit, 0, 0, 0, GL_READ_ONLY, GL_R8, GL_FALSE};
     glGetIntegeri_v(GL_IMAGE_BINDING_NAME, GLuint(unit), &i.texture);
@@ -268,14 +267,7 @@ SavedComputeState::SavedComputeState(std::vector<int> storage_bindings, std::vec
 }
 
 SavedComputeState::~SavedComputeState() {
-  for (const StorageBuffer& b : storage_buffers_) {
-    // A range of size 0 was bound whole (glBindBufferBase) or not at all.
-    if (b.buffer != 0 && b.size > 0)
-      glBindBufferRange(GL_SHADER_STORAGE_BUFFER, GLuint(b.binding), GLuint(b.buffer), GLintptr(b.start),
-                        GLsizeiptr(b.size));
-    else
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b.binding), GLuint(b.buffer));
-  }
+  for (const IndexedBufferBinding& b : storage_buffers_) restore_indexed_buffer(b);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, GLuint(generic_storage_buffer_));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, GLuint(dispatch_indirect_buffer_));
   for (const ImageUnit& i : images_)

@@ -86,6 +86,18 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
 
 namespace rsaa::gl {
 
+// A buffer bound at an indexed binding point (GL_UNIFORM_BUFFER or GL_SHADER_STORAGE_BUFFER), as
+// SavedState and SavedComputeState keep it: saved by save_indexed_buffer(), put back by
+// restore_indexed_buffer().
+struct IndexedBufferBinding {
+  GLenum target;
+  int binding;
+  GLint buffer;
+  GLint64 start, size;
+};
+IndexedBufferBinding save_indexed_buffer(GLenum target, int binding);
+void restore_indexed_buffer(const IndexedBufferBinding& b);
+
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
 // bindings, viewport, current program, depth test/function/mask/range, polygon offset, blending and colour mask of
 // every draw buffer, scissor test, face culling, polygon mode, rasterizer discard, sample
@@ -109,11 +121,6 @@ class SavedState {
     GLboolean blend;
     GLboolean colour_mask[4];
   };
-  struct UniformBuffer {
-    int binding;
-    GLint buffer;
-    GLint64 start, size;
-  };
   GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, viewport_[4] = {}, program_ = 0;
   GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, scissor_ = GL_FALSE;
   GLboolean sample_shading_ = GL_FALSE, cull_face_ = GL_FALSE, rasterizer_discard_ = GL_FALSE;
@@ -129,7 +136,7 @@ class SavedState {
   GLint stencil_[2][7] = {};
   std::vector<UnitTextures> textures_;
   std::vector<DrawBufferState> draw_buffers_;  // blending and colour mask of every draw buffer
-  std::vector<UniformBuffer> uniform_buffers_;
+  std::vector<IndexedBufferBinding> uniform_buffers_;
 };
 
 // Saves and restores what a compute pass changes beside SavedState: the shader storage buffers
@@ -143,18 +150,13 @@ class SavedComputeState {
   SavedComputeState& operator=(const SavedComputeState&) = delete;
 
  private:
-  struct StorageBuffer {
-    int binding;
-    GLint buffer;
-    GLint64 start, size;
-  };
   struct ImageUnit {
     int unit;
     GLint texture, level, layer, access, format;
     GLboolean layered;
   };
   GLint generic_storage_buffer_ = 0, dispatch_indirect_buffer_ = 0;
-  std::vector<StorageBuffer> storage_buffers_;
+  std::vector<IndexedBufferBinding> storage_buffers_;
   std::vector<ImageUnit> images_;
 };
 
