@@ -324,6 +324,12 @@ void require_texture(GLuint texture, GLenum internal_format, int width, int heig
                                 std::to_string(w) + "x" + std::to_string(h) + " " +
                                 format_name(GLenum(format)) +
                                 (target == GL_TEXTURE_2D ? "" : " non-2D") + " texture" + needs);
+  // Passes read (texelFetch, level 0 = the base level) and write (images, framebuffers) level 0.
+  GLint base_level = 0;
+  glGetTextureParameteriv(texture, GL_TEXTURE_BASE_LEVEL, &base_level);
+  if (base_level != 0)
+    throw std::invalid_argument(what + ": texture " + std::to_string(texture) + " has GL_TEXTURE_BASE_LEVEL " +
+                                std::to_string(base_level) + "; the pass reads and writes level 0, so it needs 0");
 }
 
 }  // namespace rsaa::gl

@@ -43,6 +43,8 @@ struct RsaaPass::Objects {
   gl::Program cull_program;
   gl::Framebuffer cull_target;
   gl::CachedFramebuffer resolve_target;
+  // copy_colour(): the frame's colour and the output, each alone in a framebuffer.
+  gl::CachedFramebuffer copy_source, copy_target;
   // The two-pass post-process (RsaaSettings::post "edges"): the edge pass writes depth (the
   // full-screen triangle's) only where a pixel is to be resolved, into a depth-only target.
   gl::Program edge_program;
@@ -459,10 +461,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     gl_->cull_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
                                           {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_prepass_cull.frag")}},
                                          defines, "RSAA pre-pass culling");
-  gl_->post_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
-                                        {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
-                                       defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
-                                       "RSAA post-process");
+  if (settings.post != "compute")
+    gl_->post_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
+                                          {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post.frag")}},
+                                         defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n",
+                                         "RSAA post-process");
   if (settings.post == "edges") {
     gl_->edge_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
                                           {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_post_edges.frag")}},
@@ -471,10 +474,15 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
   }
   if (settings.post == "compute") {
-    // The list packs a pixel's x and y into 16 bits each.
-    if (width > 65536 || height > 65536)
-      throw std::invalid_argument("RSAA post compute: " + std::to_string(width) + "x" + std::to_string(height) +
-                                  " is larger than the edge list's 65536 x 65536 (use post edges)");
+    // The list packs a pixel's x and y into 16 bits each, and holds up to every pixel.
+    GLint64 max_block = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    const GLint64 list_bytes = 4 * (4 + GLint64(width) * GLint64(height));
+    if (width > 65536 || height > 65536 || list_bytes > max_block)
+      throw std::invalid_argument("RSAA post compute: the edge list of a " + std::to_string(width) + "x" +
+                                  std::to_string(height) + " image (" + std::to_string(list_bytes) +
+                                  " bytes) is larger than this driver's shader storage block (" +
+                                  std::to_string(max_block) + " bytes) or 65536 x 65536 pixels; use post edges");
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
                                      "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
     gl_->classify_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
@@ -688,8 +696,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     // Every pixel's colour as it is (and the all-similar mask): the resolve pass overwrites the
     // edge pixels. An image copy, and an edge pass that writes depth only: on llvmpipe an edge
     // pass that also fetched and wrote every colour cost more (README, *Cheaper post-processes*).
-    glCopyImageSubData(frame.colour, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, frame.width,
-                       frame.height, 1);
+    copy_colour(frame, output);
     if (settings_.output_mask) {
       const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);
       glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
@@ -719,6 +726,16 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   gl::check("RSAA post-process");
 }
 
+// The frame's colour into the output as it is, by a framebuffer blit at scale 1 (exact): unlike
+// glCopyImageSubData it takes textures that are not mipmap-complete (a glTexImage2D output with
+// the default minification filter).
+void RsaaPass::copy_colour(const RsaaFrame& frame, GLuint output) {
+  const GLuint source = gl_->copy_source.get({{frame.colour}}, {});
+  const GLuint target = gl_->copy_target.get({{output}}, {});
+  glBlitNamedFramebuffer(source, target, 0, 0, frame.width, frame.height, 0, 0, frame.width, frame.height,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
 // The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
 // list of the pixels whose mask is not all-similar (rsaa_post_classify.comp), its dispatch size
 // (rsaa_post_list_size.comp), then the resolve on the listed pixels only (rsaa_post_resolve.comp,
@@ -732,8 +749,7 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   // In place, the image already holds every edge-free pixel's colour: no copy.
   const bool in_place = output == frame.colour;
   if (!in_place)
-    glCopyImageSubData(frame.colour, GL_TEXTURE_2D, 0, 0, 0, 0, output, GL_TEXTURE_2D, 0, 0, 0, 0, frame.width,
-                       frame.height, 1);
+    copy_colour(frame, output);
   if (in_place && gl_->scratch.get() == 0) gl_->scratch = gl::make_texture_2d(GL_RGBA16F, width_, height_);
   if (settings_.output_mask) {
     const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);

@@ -275,6 +275,7 @@ class RsaaPass {
   struct Objects;  // GL objects, defined in rsaa_pass.cpp
   void write_frame_uniforms(const RsaaFrame& frame) const;
   void resolve_edge_list(const RsaaFrame& frame, GlName output, GlName mask_output);
+  void copy_colour(const RsaaFrame& frame, GlName output);
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
   RsaaSettings settings_;

@@ -4,4 +4,8 @@
 
 layout(local_size_x = 1) in;
 
-void main() { rsaa_list_groups_x = (rsaa_list_count + RSAA_RESOLVE_GROUP - 1u) / RSAA_RESOLVE_GROUP; }
+void main() {
+  uint groups = (rsaa_list_count + RSAA_RESOLVE_GROUP - 1u) / RSAA_RESOLVE_GROUP;
+  rsaa_list_groups_x = min(groups, RSAA_MAX_GROUPS_X);
+  rsaa_list_groups_y = (groups + RSAA_MAX_GROUPS_X - 1u) / RSAA_MAX_GROUPS_X;
+}

@@ -13,7 +13,7 @@ layout(binding = 1, r32ui) uniform writeonly uimage2D rsaa_output_mask;
 #endif
 
 void main() {
-  uint index = gl_GlobalInvocationID.x;
+  uint index = rsaa_list_index();
   if (index >= rsaa_list_count) return;
   uint entry = rsaa_list_pixels[index];
   ivec2 pixel = ivec2(entry & 0xffffu, entry >> 16u);

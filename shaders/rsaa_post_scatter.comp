@@ -9,7 +9,7 @@ layout(binding = 0, rgba16f) uniform writeonly image2D rsaa_output;
 layout(binding = 1, rgba16f) uniform readonly image2D rsaa_resolved;
 
 void main() {
-  uint index = gl_GlobalInvocationID.x;
+  uint index = rsaa_list_index();
   if (index >= rsaa_list_count) return;
   uint entry = rsaa_list_pixels[index];
   ivec2 pixel = ivec2(entry & 0xffffu, entry >> 16u);

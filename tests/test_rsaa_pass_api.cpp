@@ -289,6 +289,20 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glBindImageTexture(1, engine_texture.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, engine_buffer.get(), 64, 128);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, engine_buffer.get());
+  const gl::Buffer engine_generic_buffer = [] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, 64, nullptr, 0);
+    return gl::Buffer(b);
+  }();
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, engine_generic_buffer.get());  // the generic binding alone
+  const gl::Texture engine_array = [] {
+    GLuint t = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &t);
+    glTextureStorage3D(t, 2, GL_RGBA8, 4, 4, 3);
+    return gl::Texture(t);
+  }();
+  glBindImageTexture(1, engine_array.get(), 1, GL_FALSE, 2, GL_WRITE_ONLY, GL_RGBA8);  // level 1, layer 2
 
   RsaaSettings settings;
   settings.prepass_cull = "neighbours";  // the pass's stencil state too
@@ -363,13 +377,23 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, 0, &image0_access);
   glGetIntegeri_v(GL_IMAGE_BINDING_NAME, 1, &image1);
   glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, 1, &image1_format);
+  GLint image1_level = 0, image1_layer = 0, generic_storage = 0;
+  GLboolean image1_layered = GL_TRUE;
+  glGetIntegeri_v(GL_IMAGE_BINDING_LEVEL, 1, &image1_level);
+  glGetIntegeri_v(GL_IMAGE_BINDING_LAYER, 1, &image1_layer);
+  glGetBooleani_v(GL_IMAGE_BINDING_LAYERED, 1, &image1_layered);
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &generic_storage);
+  EXPECT_EQ(image1_level, 1);
+  EXPECT_EQ(image1_layer, 2);
+  EXPECT_EQ(image1_layered, GL_FALSE);
+  EXPECT_EQ(GLuint(generic_storage), engine_generic_buffer.get());
   glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &storage);
   glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, 0, &storage_start);
   glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, 0, &storage_size);
   glGetIntegerv(GL_DISPATCH_INDIRECT_BUFFER_BINDING, &indirect);
   EXPECT_EQ(GLuint(image0), engine_texture.get());
   EXPECT_EQ(image0_access, GL_READ_ONLY);
-  EXPECT_EQ(GLuint(image1), engine_texture.get());
+  EXPECT_EQ(GLuint(image1), engine_array.get());
   EXPECT_EQ(image1_format, GL_RGBA8);
   EXPECT_EQ(GLuint(storage), engine_buffer.get());
   EXPECT_EQ(storage_start, 64);
@@ -473,8 +497,15 @@ TEST_F(RsaaPassApi, TheColoursMinificationFilterDoesNotMatter) {
 // and masks, bit for bit, for the default options and the paper's resolve with each
 // authentication, on scenes with silhouettes, thin parts and many small triangles.
 TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
-  constexpr int width = 160, height = 120;
-  for (const char* scene_name : {"builtin:default", "builtin:fence", "builtin:interpenetrating"}) {
+  // The fence also at a size that is no multiple of the passes' 8 x 8 groups or SIMD blocks.
+  const struct {
+    const char* scene_name;
+    int width, height;
+  } cases[] = {{"builtin:default", 160, 120}, {"builtin:fence", 160, 120}, {"builtin:interpenetrating", 160, 120},
+               {"builtin:fence", 163, 117}};
+  for (const auto& c : cases) {
+    const char* scene_name = c.scene_name;
+    const int width = c.width, height = c.height;
     const test::SceneFrame scene(scene_name, width, height);
     std::vector<RsaaSettings> variants = {RsaaSettings{}};
     for (int auth : {0, 1, 2}) {
@@ -486,19 +517,21 @@ TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
     depth_4x.pattern = "d3d4x", depth_4x.similarity = "depth";
     variants.push_back(depth_4x);
     for (RsaaSettings settings : variants) {
-      settings.output_mask = true;
       std::vector<Image> images;
       std::vector<std::vector<std::uint32_t>> masks;
-      const std::vector<std::string> posts = {"single", "edges", "compute"};
+      // The last: the compute pass without the mask output (its shaders are built without it).
+      const std::vector<std::string> posts = {"single", "edges", "compute", "compute, no mask"};
       for (const std::string& post : posts) {
-        settings.post = post;
+        const bool no_mask = post == "compute, no mask";
+        settings.post = no_mask ? "compute" : post;
+        settings.output_mask = !no_mask;
         RsaaPass pass(settings, width, height);
         scene.render_subsamples(pass);
         const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
         const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
-        pass.resolve(scene.frame(), output.get(), mask.get());
+        pass.resolve(scene.frame(), output.get(), no_mask ? 0u : mask.get());
         images.push_back(read_back_image(output.get(), width, height));
-        masks.push_back(read_back_uints(mask.get(), width, height));
+        masks.push_back(no_mask ? masks[0] : read_back_uints(mask.get(), width, height));
       }
       const std::uint32_t all_similar = (1u << (settings.pattern == "d3d4x" ? 4 : 8)) - 1u;
       for (std::size_t k = 1; k < posts.size(); ++k) {
@@ -509,8 +542,9 @@ TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
           const Rgb a = images[0].pixels[p], b = images[k].pixels[p];
           differing_colour += a.r != b.r || a.g != b.g || a.b != b.b;
         }
-        SCOPED_TRACE(std::string(scene_name) + " " + settings.pattern + " " + settings.similarity + " auth " +
-                     std::to_string(settings.auth) + " " + settings.multi_surface + " post " + posts[k]);
+        SCOPED_TRACE(std::string(scene_name) + " " + std::to_string(width) + "x" + std::to_string(height) + " " +
+                     settings.pattern + " " + settings.similarity + " auth " + std::to_string(settings.auth) + " " +
+                     settings.multi_surface + " post " + posts[k]);
         EXPECT_GT(edges, 100);  // the comparison covers resolved pixels
         EXPECT_EQ(differing_mask, 0);
         EXPECT_EQ(differing_colour, 0);
@@ -570,6 +604,52 @@ TEST_F(RsaaPassApi, ResolvingInPlaceGivesTheSeparateOutputsImage) {
   EXPECT_EQ(targets.frame(glm::mat4(1.0f)).colour, own.get());
   targets.use_colour(0);
   EXPECT_NE(targets.frame(glm::mat4(1.0f)).colour, own.get());
+}
+
+// An output that is not mipmap-complete (level 0 only, the default minification filter, as
+// glTexImage2D leaves it) takes the image as any other, in every post-process; one whose base
+// level is not 0 (the pass writes level 0) is refused, not silently left unresolved.
+TEST_F(RsaaPassApi, AnIncompleteOutputWorksAndABaseLevelIsRefused) {
+  constexpr int width = 160, height = 120;
+  const test::SceneFrame scene("builtin:default", width, height);
+  for (const char* post : {"compute", "edges", "single"}) {
+    RsaaSettings settings;
+    settings.post = post;
+    RsaaPass pass(settings, width, height);
+    scene.render_subsamples(pass);
+    const gl::Texture complete = gl::make_texture_2d(GL_RGBA16F, width, height);
+    const gl::Texture incomplete = [&] {
+      GLuint t = 0;
+      glGenTextures(1, &t);
+      glBindTexture(GL_TEXTURE_2D, t);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      return gl::Texture(t);
+    }();
+    pass.resolve(scene.frame(), complete.get());
+    pass.resolve(scene.frame(), incomplete.get());
+    const Image a = read_back_image(complete.get(), width, height);
+    const Image b = read_back_image(incomplete.get(), width, height);
+    int differing = 0;
+    for (std::size_t p = 0; p < a.pixels.size(); ++p)
+      differing += a.pixels[p].r != b.pixels[p].r || a.pixels[p].g != b.pixels[p].g || a.pixels[p].b != b.pixels[p].b;
+    EXPECT_EQ(differing, 0) << post;
+
+    const gl::Texture base_level_1 = [&] {
+      GLuint t = 0;
+      glCreateTextures(GL_TEXTURE_2D, 1, &t);
+      glTextureStorage2D(t, 2, GL_RGBA16F, width, height);
+      glTextureParameteri(t, GL_TEXTURE_BASE_LEVEL, 1);
+      return gl::Texture(t);
+    }();
+    try {
+      pass.resolve(scene.frame(), base_level_1.get());
+      ADD_FAILURE() << post << ": an output with base level 1 was taken";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("GL_TEXTURE_BASE_LEVEL 1"), std::string::npos) << e.what();
+    }
+  }
+  gl::check("incomplete output test");
 }
 
 // The edge pass's test (rsaa_pixel_has_edge: the largest and smallest code) against the mask
