@@ -1,6 +1,7 @@
 #include "runtime/pass_timer.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rsaa {
 
@@ -20,6 +21,12 @@ void PassTimer::end() {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started_).count();
 }
 
+double plausible_timer_query(double query_milliseconds, double wall_milliseconds) {
+  const bool plausible = std::isfinite(query_milliseconds) && query_milliseconds >= 0.0 &&
+                         query_milliseconds <= 2.0 * wall_milliseconds + 1.0;
+  return plausible ? query_milliseconds : kNoTimerQuery;
+}
+
 std::vector<PassTime> PassTimer::collect() {
   std::vector<PassTime> out;
   for (const Entry& e : entries_) {
@@ -28,7 +35,9 @@ std::vector<PassTime> PassTimer::collect() {
     // Passes with the same name (the jittered passes) add up, in order of first appearance.
     auto it = std::find_if(out.begin(), out.end(), [&](const PassTime& t) { return t.pass == e.pass; });
     if (it == out.end()) it = out.insert(out.end(), {e.pass, 0.0, 0.0});
-    it->milliseconds += ns * 1e-6;
+    const double query = plausible_timer_query(ns * 1e-6, e.wall_milliseconds);
+    it->milliseconds = it->milliseconds == kNoTimerQuery || query == kNoTimerQuery ? kNoTimerQuery
+                                                                                 : it->milliseconds + query;
     it->wall_milliseconds += e.wall_milliseconds;
   }
   entries_.clear();

@@ -120,8 +120,12 @@ FrameTiming time_frames(Technique& t, const GpuScene& gpu, const View& view, GLu
     copy_ms.push_back(copy.time_ms(output));
   }
   FrameTiming out;
-  for (const std::string& pass : pass_order)
-    out.pass_medians.push_back({pass, median(per_pass[pass].second), median(per_pass[pass].first)});
+  for (const std::string& pass : pass_order) {
+    const std::vector<double>& queries = per_pass[pass].second;
+    const bool all_plausible = std::find(queries.begin(), queries.end(), kNoTimerQuery) == queries.end();
+    out.pass_medians.push_back(
+        {pass, all_plausible ? median(queries) : kNoTimerQuery, median(per_pass[pass].first)});
+  }
   out.frame_ms = median(frame_ms);
   out.copy_ms = median(copy_ms);
   return out;
@@ -247,7 +251,8 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
     for (const PassTime& p : r.pass_medians)
       passes.push_back({{"pass", p.pass},
                         {"wall_ms", p.wall_milliseconds},
-                        {"gl_timer_ms", p.milliseconds},
+                        {"gl_timer_ms", p.milliseconds == kNoTimerQuery ? nlohmann::json(nullptr)
+                                                                        : nlohmann::json(p.milliseconds)},
                         {"copy_multiple", copy_multiple(r, p)}});
     out["results"].push_back({{"scene", r.scene},
                               {"technique", r.label},
@@ -322,7 +327,9 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       r.options.rules = opt.value("rules", TechniqueOptions{}.rules);
       r.options.shade = opt.value("shade", TechniqueOptions{}.shade);
       for (const auto& p : e.at("passes"))
-        r.pass_medians.push_back({p.at("pass"), p.at("gl_timer_ms"), p.at("wall_ms")});
+        r.pass_medians.push_back({p.at("pass"),
+                                  p.at("gl_timer_ms").is_null() ? kNoTimerQuery : p.at("gl_timer_ms").get<double>(),
+                                  p.at("wall_ms")});
       r.frame_ms = e.at("frame_ms");
       r.frame_ratio = e.at("frame_ratio_to_noaa");
       r.copy_ms = e.value("copy_ms", 0.0);

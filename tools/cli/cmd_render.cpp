@@ -36,9 +36,11 @@ int run_render(const RenderArgs& a) {
   write_image(a.out, image);
   std::printf("%s: %s, %dx%d, %zu triangles -> %s\n", stats.label.c_str(), scene.name.c_str(),
               a.width, a.height, scene.triangle_count(), a.out.c_str());
-  for (const PassTime& t : stats.pass_times)
-    std::printf("  %-13s %8.2f ms (GL timer query %.2f ms)\n", t.pass.c_str(), t.wall_milliseconds,
-                t.milliseconds);
+  for (const PassTime& t : stats.pass_times) {
+    char query[48] = "n/a";
+    if (t.milliseconds != kNoTimerQuery) std::snprintf(query, sizeof query, "%.2f ms", t.milliseconds);
+    std::printf("  %-13s %8.2f ms (GL timer query %s)\n", t.pass.c_str(), t.wall_milliseconds, query);
+  }
   std::printf("  memory        %8.1f bytes/pixel\n", stats.bytes_per_pixel);
   return 0;
 }
