@@ -496,8 +496,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     GLuint buffer = 0;
     glCreateBuffers(1, &buffer);
     gl_->edge_list = gl::Buffer(buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(4 * (4 + std::size_t(width) * std::size_t(height))), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(buffer, GLsizeiptr(list_bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
   gl::check("creating the RSAA pass");
 }
@@ -678,9 +677,6 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     if (!mask_output) throw std::invalid_argument("RSAA resolve: output_mask set but no mask texture");
     targets.push_back({mask_output});
   }
-  const bool edges = settings_.post == "edges";
-  const GLuint fb = gl_->resolve_target.get(targets, {edges ? gl_->edge_depth.get() : 0u});
-  const GLuint edge_fb = edges ? gl_->edge_target.get({}, {gl_->edge_depth.get()}) : 0u;
   write_frame_uniforms(frame);
   glBindSamplers(0, kPostUnits, nullptr);  // the textures' own filtering (an engine's sampler objects are restored)
   glBindTextureUnit(kColourUnit, frame.colour);
@@ -691,16 +687,21 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   if (union_) glBindTextureUnit(kFirstCodeUnit + 1, gl_->codes_ms2.get());
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
   if (settings_.material_edges) glBindTextureUnit(kPrimitiveUnit, frame.centre_primitive);
+  if (settings_.post == "compute") {
+    resolve_edge_list(frame, output, mask_output);
+    gl::check("RSAA post-process");
+    return;
+  }
+  const bool edges = settings_.post == "edges";
+  const GLuint fb = gl_->resolve_target.get(targets, {edges ? gl_->edge_depth.get() : 0u});
+  const GLuint edge_fb = edges ? gl_->edge_target.get({}, {gl_->edge_depth.get()}) : 0u;
   glViewport(0, 0, frame.width, frame.height);
   if (edges) {
     // Every pixel's colour as it is (and the all-similar mask): the resolve pass overwrites the
     // edge pixels. An image copy, and an edge pass that writes depth only: on llvmpipe an edge
     // pass that also fetched and wrote every colour cost more (README, *Cheaper post-processes*).
     copy_colour(frame, output);
-    if (settings_.output_mask) {
-      const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);
-      glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
-    }
+    if (settings_.output_mask) clear_to_all_similar(mask_output);
     // Edge pass: depth 1 everywhere, then the full-screen triangle's depth (0.5, or 0 under
     // glClipControl GL_ZERO_TO_ONE) where the mask is not all-similar (the others discard).
     glBindFramebuffer(GL_FRAMEBUFFER, edge_fb);
@@ -714,16 +715,17 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     glDepthFunc(GL_GEQUAL);
     glDepthMask(GL_FALSE);
   }
-  if (settings_.post == "compute") {
-    resolve_edge_list(frame, output, mask_output);
-    gl::check("RSAA post-process");
-    return;
-  }
   glBindFramebuffer(GL_FRAMEBUFFER, fb);
   glUseProgram(gl_->post_program.get());
   draw_fullscreen_triangle();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   gl::check("RSAA post-process");
+}
+
+// The mask output of a pass that resolves only the edge pixels: every other pixel all-similar.
+void RsaaPass::clear_to_all_similar(GLuint mask_output) const {
+  const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);
+  glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
 }
 
 // The frame's colour into the output as it is, by a framebuffer blit at scale 1 (exact): unlike
@@ -751,10 +753,7 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   if (!in_place)
     copy_colour(frame, output);
   if (in_place && gl_->scratch.get() == 0) gl_->scratch = gl::make_texture_2d(GL_RGBA16F, width_, height_);
-  if (settings_.output_mask) {
-    const GLuint all_similar = GLuint((std::uint64_t(1) << pattern_.size()) - 1);
-    glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
-  }
+  if (settings_.output_mask) clear_to_all_similar(mask_output);
   // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
   const GLuint empty_list[4] = {0, 1, 1, 0};
   glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);

@@ -276,6 +276,7 @@ class RsaaPass {
   void write_frame_uniforms(const RsaaFrame& frame) const;
   void resolve_edge_list(const RsaaFrame& frame, GlName output, GlName mask_output);
   void copy_colour(const RsaaFrame& frame, GlName output);
+  void clear_to_all_similar(GlName mask_output) const;
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
   RsaaSettings settings_;

@@ -18,9 +18,8 @@ class Rsaa : public Technique {
   void render(const GpuScene& scene, const View& view, GLuint output) override {
     // With the compute post-process the frame is drawn into the output and resolved in place (no
     // copy of the image); the resolve's bilinear fetch needs the output filtered linearly meanwhile.
-    const bool in_place = in_place_;
     GLint min_filter = GL_LINEAR, mag_filter = GL_LINEAR;
-    if (in_place) {
+    if (in_place_) {
       targets_.use_colour(output);
       glGetTextureParameteriv(output, GL_TEXTURE_MIN_FILTER, &min_filter);
       glGetTextureParameteriv(output, GL_TEXTURE_MAG_FILTER, &mag_filter);
@@ -40,7 +39,7 @@ class Rsaa : public Technique {
     timer_.begin("post-process");
     pass_.resolve(frame, output, mask_output_);
     timer_.end();
-    if (in_place) {
+    if (in_place_) {
       glTextureParameteri(output, GL_TEXTURE_MIN_FILTER, min_filter);
       glTextureParameteri(output, GL_TEXTURE_MAG_FILTER, mag_filter);
     }
