@@ -68,7 +68,7 @@ TEST(Diagnosis, ClassesOracleAndTable) {
   EXPECT_EQ(coverage_resolve(in, 1, 1).r, 0.0f);
   const std::string md = diagnosis_markdown(d, "test");
   EXPECT_NE(md.find("2 surfaces, one-line offset | 1 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("exact coverage / no-AA"), std::string::npos) << md;
+  EXPECT_NE(md.find("exact coverage / no-AA | line fit / no-AA"), std::string::npos) << md;
   // With them: 16 of 64 samples white (the left neighbour's colour), 48 black (the centre's).
   for (int y = 0; y < 3; ++y) in.surfaces[y * 3 + 1].samples = {48, 16}, in.surfaces[y * 3 + 1].total = 64;
   EXPECT_FLOAT_EQ(coverage_resolve(in, 1, 1).r, 0.25f);
@@ -81,6 +81,37 @@ TEST(Diagnosis, ClassesOracleAndTable) {
   EXPECT_GT(exact.coverage_psnr, exact.noaa_psnr + 20.0);
   in.masks[4] = Mask{1} << 9;  // does not fit 8 samples
   EXPECT_THROW(diagnose(in), std::invalid_argument);
+}
+
+// A straight vertical edge at x = -0.25 of the centre column (pixel space): white (surface 1) to
+// its left, black (2) to its right, so a quarter of each centre-column pixel is white. Every
+// mask says so (the subsamples left of the line are dissimilar in the centre column, none
+// elsewhere); the fitted line puts the edge there and the fetch takes a quarter of the white
+// neighbour, at the image border too (neighbours outside the image are skipped).
+TEST(Diagnosis, TheLineFittedAcrossNeighbouringMasksFindsAStraightEdge) {
+  const SamplePattern pattern = builtin_pattern("d3d8x");
+  const OffsetTable table = fallback_table(pattern);
+  DiagnosisInputs in;
+  in.noaa = Image(3, 3);
+  in.reference = Image(3, 3);
+  in.masks.assign(9, full_mask(8));
+  in.centre_surface.assign(9, 2);
+  Mask edge_mask = full_mask(8);
+  for (int k = 0; k < pattern.size(); ++k)
+    if (pattern.positions[k].x < -0.25) edge_mask &= ~(Mask{1} << k);
+  ASSERT_NE(edge_mask, full_mask(8));
+  for (int y = 0; y < 3; ++y) {
+    in.noaa.at(0, y) = in.reference.at(0, y) = {1, 1, 1};
+    in.reference.at(1, y) = {0.25f, 0.25f, 0.25f};
+    in.centre_surface[y * 3] = 1;
+    in.masks[y * 3 + 1] = edge_mask;
+  }
+  in.rsaa = in.noaa;
+  in.table = &table;
+  for (int y = 0; y < 3; ++y) EXPECT_NEAR(line_fit_resolve(in, 1, y).r, 0.25f, 0.02f) << y;
+  // A pixel no subsample of which is labelled another surface keeps RSAA's colour.
+  in.rsaa.at(2, 1) = {0.5f, 0.5f, 0.5f};
+  EXPECT_EQ(line_fit_resolve(in, 2, 1).r, 0.5f);
 }
 
 TEST(Diagnosis, CommandWritesTheTableAndPictures) {

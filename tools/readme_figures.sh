@@ -4,12 +4,13 @@
 # crops), the papers' figures, the coverage family's goals on held-out models, the
 # scene-specific tables and the reliability report. Logs go to
 # OUT_DIR/*.md; the pictures the README shows are copied to docs/images/.
-# Usage: tools/readme_figures.sh [--quick] [--only papers|cost] [OUT_DIR]
+# Usage: tools/readme_figures.sh [--quick] [--only papers|cost|diagnosis] [OUT_DIR]
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
 #   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
 #   --only cost: just the timing steps (post-process at 1280x720, the culled pre-pass, how cost
 #            grows, the bench; about 15 minutes), to measure them again on a quiet machine.
+#   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -17,14 +18,15 @@ only=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --quick) quick=1; shift ;;
-    --only) only=${2:?--only needs a step: papers or cost}; shift 2 ;;
-    -h | --help) sed -n 2,9p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --only) only=${2:?--only needs a step: papers, cost or diagnosis}; shift 2 ;;
+    -h | --help) sed -n 2,13p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
-[[ -z $only || $only == papers || $only == cost ]] ||
-  { echo "readme_figures.sh: --only $only: the steps run alone are: papers, cost" >&2; exit 2; }
-[[ $only != cost || $quick == 0 ]] || { echo "readme_figures.sh: --only cost has no --quick form" >&2; exit 2; }
+[[ -z $only || $only == papers || $only == cost || $only == diagnosis ]] ||
+  { echo "readme_figures.sh: --only $only: the steps run alone are: papers, cost, diagnosis" >&2; exit 2; }
+[[ $only != cost && $only != diagnosis || $quick == 0 ]] ||
+  { echo "readme_figures.sh: --only $only has no --quick form" >&2; exit 2; }
 default_out=out/figures
 [[ $quick == 1 ]] && default_out=out/figures-quick
 out=${1:-$default_out}
@@ -73,9 +75,46 @@ cost_steps() {
   cp "$out/bench/crops-default.png" docs/images/bench_crops_default.png
   cp "$out/bench/crops-2CylinderEngine.png" docs/images/bench_crops_engine.png
 }
+# Where RSAA's error lives (rsaa diagnose): before and after on three scenes, the defaults at 8 and
+# 4 subsamples, and the held-out models where RSAA 8x stays below 4x MSAA (about 6 minutes).
+diagnosis_steps() {
+  for scene in builtin:default "$engine" builtin:grazing; do
+    name=$(basename "${scene#builtin:}"); name=${name%.*}
+    # Before (the paper's SADP, then sadp-plane, each with the paper's resolve) and after (the defaults).
+    for variant in sadp sadp-plane defaults; do
+      options=(--similarity "$variant" --auth 0 --split-cap 0 --multi-surface fetch --split-check off --fetch-check off
+               --material-edges off)
+      [ "$variant" = defaults ] && options=()
+      step "diagnosis, $name, $variant" "diagnosis/$name-$variant.md"
+      $rsaa diagnose --scene "$scene" "${options[@]}" --out-dir "$out/diagnosis/$name-$variant" \
+        >"$out/diagnosis/$name-$variant.md"
+      cp "$out/diagnosis/$name-$variant/error_map.png" "docs/images/diagnosis_${name}_$variant.png"
+    done
+  done
+  # Why 8 subsamples gain little over 4: the defaults at both counts, per class, beside exact coverage.
+  for scene in builtin:default "$engine" "$truck" /usr/share/assimp/models/OBJ/spider.obj; do
+    name=$(basename "${scene#builtin:}"); name=${name%.*}
+    for samples in 8 4; do
+      step "diagnosis, $name, defaults at ${samples}x" "diagnosis/$name-samples$samples.md"
+      $rsaa diagnose --scene "$scene" --samples $samples --out-dir "$out/diagnosis/$name-samples$samples" \
+        >"$out/diagnosis/$name-samples$samples.md"
+    done
+  done
+  local models=/usr/share/assimp/models
+  for scene in $models/Q3D/E-AT-AT.q3o $models/3DS/fels.3ds $models/COB/dwarf.cob $models/IFC/AC14-FZK-Haus.ifc; do
+    name=$(basename "$scene"); name=${name%.*}
+    step "diagnosis, $name (held out), defaults" "diagnosis/$name-defaults.md"
+    $rsaa diagnose --scene "$scene" --out-dir "$out/diagnosis/$name-defaults" >"$out/diagnosis/$name-defaults.md"
+  done
+}
 if [[ $only == cost ]]; then
   cost_steps
   echo "the timing steps done in $((SECONDS - started)) s" >&2
+  exit 0
+fi
+if [[ $only == diagnosis ]]; then
+  diagnosis_steps
+  echo "the diagnosis steps done in $((SECONDS - started)) s" >&2
   exit 0
 fi
 if [[ $only == papers ]]; then
@@ -131,28 +170,7 @@ for scene in builtin:default "$engine" "$truck"; do
 done
 cp "$out/compare/default/rsaax8.png" docs/images/default_rsaa.png
 bash tools/crops.sh "$out/compare/default" 100x75+250+40 docs/images/default_crops_star.png
-for scene in builtin:default "$engine" builtin:grazing; do
-  name=$(basename "${scene#builtin:}"); name=${name%.*}
-  # Before (the paper's SADP, then sadp-plane, each with the paper's resolve) and after (the defaults).
-  for variant in sadp sadp-plane defaults; do
-    options=(--similarity "$variant" --auth 0 --split-cap 0 --multi-surface fetch --split-check off --fetch-check off
-             --material-edges off)
-    [ "$variant" = defaults ] && options=()
-    step "diagnosis, $name, $variant" "diagnosis/$name-$variant.md"
-    $rsaa diagnose --scene "$scene" "${options[@]}" --out-dir "$out/diagnosis/$name-$variant" \
-      >"$out/diagnosis/$name-$variant.md"
-    cp "$out/diagnosis/$name-$variant/error_map.png" "docs/images/diagnosis_${name}_$variant.png"
-  done
-done
-# Why 8 subsamples gain little over 4: the defaults at both counts, per class, beside exact coverage.
-for scene in builtin:default "$engine" "$truck" /usr/share/assimp/models/OBJ/spider.obj; do
-  name=$(basename "${scene#builtin:}"); name=${name%.*}
-  for samples in 8 4; do
-    step "diagnosis, $name, defaults at ${samples}x" "diagnosis/$name-samples$samples.md"
-    $rsaa diagnose --scene "$scene" --samples $samples --out-dir "$out/diagnosis/$name-samples$samples" \
-      >"$out/diagnosis/$name-samples$samples.md"
-  done
-done
+diagnosis_steps
 step "bench, RSAA against its baselines" bench-rsaa.md
 $rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
   --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"

@@ -11,6 +11,7 @@
 
 #include "core/util/colour.h"
 #include "core/util/parallel.h"
+#include "core/rsaa/polygon.h"
 
 namespace rsaa {
 namespace {
@@ -163,6 +164,88 @@ Rgb coverage_resolve(const DiagnosisInputs& in, int x, int y) {
   return {float(r + rest * own.r), float(g + rest * own.g), float(b + rest * own.b)};
 }
 
+Rgb line_fit_resolve(const DiagnosisInputs& in, int x, int y) {
+  const int w = in.noaa.width, h = in.noaa.height;
+  const std::size_t p = std::size_t(y) * w + x;
+  const std::uint32_t own_surface = in.centre_surface[p];
+  const std::vector<Vec2>& positions = in.table->pattern.positions;
+  struct Labelled {
+    Vec2 position;  // pixel space, from the pixel's centre
+    bool other;     // on another surface than the pixel's centre
+    int weight;
+  };
+  std::vector<Labelled> points;
+  bool any_other = false;
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i) {
+      const int nx = x + i, ny = y + j;
+      if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+      const std::size_t q = std::size_t(ny) * w + nx;
+      const bool centre_is_own = in.centre_surface[q] == own_surface;
+      for (std::size_t k = 0; k < positions.size(); ++k) {
+        const Vec2 at{i + positions[k].x, j + positions[k].y};
+        if (std::abs(at.x) > 1.0 || std::abs(at.y) > 1.0) continue;
+        const bool similar = (in.masks[q] >> k) & 1u;
+        const bool other = centre_is_own != similar;
+        points.push_back({at, other, i == 0 && j == 0 ? 3 : 1});
+        any_other = any_other || other;
+      }
+    }
+  if (!any_other) return in.rsaa.at(x, y);
+
+  // The line: `other` where dot(normal, p) > offset.
+  int best_misplaced = std::numeric_limits<int>::max();
+  double best_gap = -1.0, best_offset = 0.0;
+  Vec2 best_normal{1.0, 0.0};
+  constexpr int kDirections = 128;
+  std::vector<std::pair<double, const Labelled*>> projected(points.size());
+  for (int d = 0; d < kDirections; ++d) {
+    const double angle = 2.0 * M_PI * d / kDirections;
+    const Vec2 normal{std::cos(angle), std::sin(angle)};
+    for (std::size_t k = 0; k < points.size(); ++k) projected[k] = {dot(normal, points[k].position), &points[k]};
+    std::sort(projected.begin(), projected.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    // Sweep the offset upwards: points below it are counted on the pixel's surface.
+    int own_above = 0, other_below = 0;
+    for (const auto& [v, point] : projected) own_above += point->other ? 0 : point->weight;
+    for (std::size_t m = 0; m <= projected.size(); ++m) {
+      if (m > 0) {
+        const Labelled& passed = *projected[m - 1].second;
+        if (passed.other) other_below += passed.weight;
+        else own_above -= passed.weight;
+      }
+      if (m > 0 && m < projected.size() && projected[m - 1].first == projected[m].first) continue;
+      const double below = m > 0 ? projected[m - 1].first : projected[0].first - 1.0;
+      const double above = m < projected.size() ? projected[m].first : projected.back().first + 1.0;
+      const int misplaced = own_above + other_below;
+      if (misplaced < best_misplaced || (misplaced == best_misplaced && above - below > best_gap))
+        best_misplaced = misplaced, best_gap = above - below, best_offset = 0.5 * (below + above),
+        best_normal = normal;
+    }
+  }
+  const double beyond =
+      polygon_area(clip_to_half_plane(pixel_square(), best_normal.x, best_normal.y, -best_offset));
+
+  // Along the normal, the step whose bilinear weight on other surfaces' centres matches `beyond`.
+  const auto centre_is_other = [&](int i, int j) {
+    const int nx = std::clamp(x + i, 0, w - 1), ny = std::clamp(y + j, 0, h - 1);
+    return in.centre_surface[std::size_t(ny) * w + nx] != own_surface;
+  };
+  double best_step = 0.0, best_mismatch = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= 64; ++k) {
+    const double step = k / 64.0, ox = step * best_normal.x, oy = step * best_normal.y;
+    const int x0 = int(std::floor(ox)), y0 = int(std::floor(oy));
+    const double fx = ox - x0, fy = oy - y0;
+    const double weight = (centre_is_other(x0, y0) ? (1 - fx) * (1 - fy) : 0.0) +
+                          (centre_is_other(x0 + 1, y0) ? fx * (1 - fy) : 0.0) +
+                          (centre_is_other(x0, y0 + 1) ? (1 - fx) * fy : 0.0) +
+                          (centre_is_other(x0 + 1, y0 + 1) ? fx * fy : 0.0);
+    const double mismatch = std::abs(weight - beyond);
+    if (mismatch < best_mismatch - 1e-12) best_mismatch = mismatch, best_step = step;
+  }
+  return bilinear_fetch(in.noaa, x + best_step * best_normal.x, y + best_step * best_normal.y);
+}
+
 const char* to_string(DiagnosisClass c) {
   static const char* const names[kDiagnosisClassCount] = {
       "1 surface, left alone", "1 surface, resampled (false edge)", "2+ surfaces, unseen by the subsamples",
@@ -208,7 +291,7 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
   d.rsaa_error.resize(n);
   d.oracle = Image(w, h);
   d.coverage = Image(w, h);
-  std::vector<double> noaa_error(n), oracle_error(n), baseline_error(n), coverage_error(n);
+  std::vector<double> noaa_error(n), oracle_error(n), baseline_error(n), coverage_error(n), line_fit_error(n);
   parallel_for(std::uint64_t(h), 8, 0, [&](std::uint64_t begin, std::uint64_t end) {
     for (int y = int(begin); y < int(end); ++y)
       for (int x = 0; x < w; ++x) {
@@ -222,12 +305,17 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
         coverage_error[p] = quantised_error(d.coverage.at(x, y), ref);
         if (has_baseline) baseline_error[p] = quantised_error(in.baseline.at(x, y), ref);
         d.pixel_class[p] = classify(in, x, y, all_similar);
+        const DiagnosisClass c = d.pixel_class[p];
+        const bool two_surfaces = c == DiagnosisClass::TwoSurfacesOneLine || c == DiagnosisClass::TwoSurfacesTwoLine ||
+                                  c == DiagnosisClass::TwoSurfacesFallback;
+        line_fit_error[p] = two_surfaces ? quantised_error(line_fit_resolve(in, x, y), ref) : d.rsaa_error[p];
       }
   });
 
   d.rows.resize(kDiagnosisClassCount);
   for (int c = 0; c < kDiagnosisClassCount; ++c) d.rows[c].name = to_string(DiagnosisClass(c));
-  double rsaa_total = 0.0, noaa_total = 0.0, oracle_total = 0.0, baseline_total = 0.0, coverage_total = 0.0;
+  double rsaa_total = 0.0, noaa_total = 0.0, oracle_total = 0.0, baseline_total = 0.0, coverage_total = 0.0,
+         line_fit_total = 0.0;
   for (std::size_t p = 0; p < n; ++p) {
     DiagnosisRow& row = d.rows[int(d.pixel_class[p])];
     ++row.pixels;
@@ -236,6 +324,8 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
     row.oracle_error += oracle_error[p];
     row.baseline_error += baseline_error[p];
     row.coverage_error += coverage_error[p];
+    row.line_fit_error += line_fit_error[p];
+    line_fit_total += line_fit_error[p];
     baseline_total += baseline_error[p];
     coverage_total += coverage_error[p];
     rsaa_total += d.rsaa_error[p], noaa_total += noaa_error[p], oracle_total += oracle_error[p];
@@ -244,6 +334,7 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
   d.noaa_psnr = psnr_of(noaa_total, n);
   d.oracle_psnr = psnr_of(oracle_total, n);
   d.coverage_psnr = psnr_of(coverage_total, n);
+  d.line_fit_psnr = psnr_of(line_fit_total, n);
   d.has_baseline = has_baseline;
   d.baseline_psnr = psnr_of(baseline_total, n);
   return d;
@@ -257,16 +348,16 @@ std::string diagnosis_markdown(const Diagnosis& d, const std::string& title, con
   char line[512];
   std::snprintf(line, sizeof line,
                 "%s: RSAA %.2f dB, no AA %.2f dB, best single fetch (oracle) %.2f dB, exact coverage of the 1x "
-                "colours %.2f dB",
-                title.c_str(), d.rsaa_psnr, d.noaa_psnr, d.oracle_psnr, d.coverage_psnr);
+                "colours %.2f dB, the line fitted across the 3x3 masks %.2f dB",
+                title.c_str(), d.rsaa_psnr, d.noaa_psnr, d.oracle_psnr, d.coverage_psnr, d.line_fit_psnr);
   out << line;
   if (d.has_baseline) {
     std::snprintf(line, sizeof line, ", %s %.2f dB", baseline_name.c_str(), d.baseline_psnr);
     out << line;
   }
-  out << "\n\n| pixel class | pixels | share of RSAA error | share of no-AA error | RSAA error / no-AA | oracle / no-AA | exact coverage / no-AA | ";
+  out << "\n\n| pixel class | pixels | share of RSAA error | share of no-AA error | RSAA error / no-AA | oracle / no-AA | exact coverage / no-AA | line fit / no-AA | ";
   if (d.has_baseline) out << baseline_name << " / no-AA | ";
-  out << "PSNR if this class were perfect |\n| --- | --- | --- | --- | --- | --- | --- | " << (d.has_baseline ? "--- | " : "")
+  out << "PSNR if this class were perfect |\n| --- | --- | --- | --- | --- | --- | --- | --- | " << (d.has_baseline ? "--- | " : "")
       << "--- |\n";
   for (std::size_t c = 0; c < d.rows.size(); ++c) {
     const DiagnosisRow& r = d.rows[c];
@@ -274,10 +365,10 @@ std::string diagnosis_markdown(const Diagnosis& d, const std::string& title, con
     const double if_perfect = rest > 0.0 ? 10.0 * std::log10(255.0 * 255.0 * double(pixels) / rest)
                                          : std::numeric_limits<double>::infinity();
     const auto ratio = [&](double a) { return r.noaa_error > 0.0 ? a / r.noaa_error : 0.0; };
-    std::snprintf(line, sizeof line, "| %s | %zu | %.1f%% | %.1f%% | %.2f | %.2f | %.2f | ", r.name.c_str(), r.pixels,
+    std::snprintf(line, sizeof line, "| %s | %zu | %.1f%% | %.1f%% | %.2f | %.2f | %.2f | %.2f | ", r.name.c_str(), r.pixels,
                   rsaa_total > 0.0 ? 100.0 * r.rsaa_error / rsaa_total : 0.0,
                   noaa_total > 0.0 ? 100.0 * r.noaa_error / noaa_total : 0.0, ratio(r.rsaa_error),
-                  ratio(r.oracle_error), ratio(r.coverage_error));
+                  ratio(r.oracle_error), ratio(r.coverage_error), ratio(r.line_fit_error));
     out << line;
     if (d.has_baseline) {
       std::snprintf(line, sizeof line, "%.2f | ", ratio(r.baseline_error));

@@ -58,6 +58,7 @@ struct DiagnosisRow {
   double noaa_error = 0.0;
   double oracle_error = 0.0;  // best single bilinear fetch within [-1, 1]^2
   double coverage_error = 0.0;  // exact coverage blend of the 1x colours (coverage_resolve)
+  double line_fit_error = 0.0;  // the line fitted across the 3x3 masks (line_fit_resolve)
   double baseline_error = 0.0;
 };
 
@@ -67,6 +68,7 @@ struct Diagnosis {
   std::vector<DiagnosisClass> pixel_class;     // per pixel
   std::vector<float> rsaa_error;               // per pixel squared error
   double rsaa_psnr = 0.0, noaa_psnr = 0.0, oracle_psnr = 0.0, baseline_psnr = 0.0, coverage_psnr = 0.0;
+  double line_fit_psnr = 0.0;  // RSAA's image with line_fit_resolve() on its two-surface pixels
   bool has_baseline = false;
   Image oracle;                                // the oracle image
   Image coverage;                              // the exact-coverage image (coverage_resolve)
@@ -78,6 +80,17 @@ struct Diagnosis {
 // neighbours first; the own colour when none does). What no error in the mask or the offset
 // limits: the rest is shading and texture seen once per pixel, which more subsamples cannot fix.
 Rgb coverage_resolve(const DiagnosisInputs& in, int x, int y);
+
+// What one fetch could do if the offset came from the edge line fitted across neighbouring masks
+// rather than from the pixel's mask alone (a measurement, not a runtime option): one straight line
+// fitted to the subsamples of the pixel and of its neighbours that lie within one pixel of its
+// centre (a neighbour's subsample is on the pixel's surface when the reference shows that surface
+// at the neighbour's centre and the neighbour's mask calls the subsample similar, or neither; the
+// pixel's own subsamples count three times), the fit with the fewest misplaced subsamples over
+// 128 directions, then the widest gap. The fetch moves from the centre along the line's normal
+// until the bilinear weight on neighbour centres of another surface equals the share of the pixel
+// beyond the line. Returns RSAA's pixel where no subsample is labelled another surface.
+Rgb line_fit_resolve(const DiagnosisInputs& in, int x, int y);
 
 // A surface id per triangle (1-based): triangles of one draw range that share an edge (welded by
 // position) and whose face normals differ by less than 30 degrees belong to one surface, so a
