@@ -500,6 +500,22 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   }
   gl::check("creating the RSAA pass");
 }
+double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
+  const int n = pattern_.size();
+  const double code_bytes = settings_.code_bits / 8.0;
+  double bytes = 0.0;
+  if (multisample_)
+    bytes += n * (code_bytes + 4.0);  // a code and a 32-bit depth a sample (both draws of a union)
+  else
+    bytes += (n + 3) / 4 * 4 * code_bytes + (cull_ ? 8.0 : 4.0);  // RGBA code texels; depth (+ stencil)
+  if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
+  if (settings_.post == "compute") {
+    bytes += 4.0 * (4.0 + double(width_) * height_) / (double(width_) * height_);  // the edge list
+    if (resolves_in_place) bytes += 8.0;                                          // the RGBA16F scratch
+  }
+  return bytes;
+}
+
 RsaaPass::~RsaaPass() = default;
 RsaaPass::RsaaPass(RsaaPass&&) noexcept = default;
 RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;

@@ -268,8 +268,10 @@ class RsaaPass {
   std::vector<GlName> code_textures() const;
   // True when the pre-pass is one multisample draw (settings.prepass, resolved for this driver).
   bool multisample_prepass() const { return multisample_; }
-  // Bytes per pixel of the similarity codes this pass keeps.
-  double code_bytes_per_pixel() const { return (pattern_.size() + 3) / 4 * 4 * settings_.code_bits / 8.0; }
+  // Bytes per pixel of the GL memory this pass keeps (the frame's targets are RsaaTargets'): the
+  // pre-pass's codes and depth, the post-process's edge list or edge-pass depth, and, for a pass
+  // that resolves in place, the scratch image the listed pixels are resolved into.
+  double bytes_per_pixel(bool resolves_in_place) const;
 
  private:
   struct Objects;  // GL objects, defined in rsaa_pass.cpp

@@ -75,6 +75,26 @@ TEST_F(Runtime, EveryRegisteredTechniqueMakesItselfAndRendersAFrame) {
   gl::check("registry");
 }
 
+// The memory RSAA reports counts every buffer it keeps per pixel: the frame's targets (colour 8,
+// normal 4, primitive and material 8, depth 4), the codes (8 subsamples, 8 bits), the pre-pass
+// depth (4), and per post-process: the edge list (4 a pixel and a 16-byte header) and the scratch
+// image of the in-place resolve (8), or the edge pass's depth (2) and no scratch.
+TEST_F(Runtime, RsaaMemoryCountsEveryBufferItKeeps) {
+  const int w = 40, h = 30;
+  const double list = 4.0 + 16.0 / (w * h);
+  RsaaSettings settings;
+  settings.material_edges = true;
+  EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 24 + 8 + 4 + list + 8);
+  settings.post = "edges";
+  EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 24 + 8 + 4 + 2);
+  settings.post = "single";
+  settings.material_edges = false;
+  settings.code_bits = 16;
+  EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 20 + 16 + 4);
+  settings.prepass_cull = "neighbours";  // depth and stencil
+  EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 20 + 16 + 8);
+}
+
 TEST_F(Runtime, DriverPatternMatchesTheCheckedInGl4xTable) {
   const SamplePattern driver = query_gl_sample_pattern(4);
   const OffsetTable table = read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/gl4x.json");

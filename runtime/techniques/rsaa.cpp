@@ -46,7 +46,7 @@ class Rsaa : public Technique {
   }
 
   double bytes_per_pixel() const override {
-    return RsaaTargets::bytes_per_pixel(material_edges_) + pass_.code_bytes_per_pixel();
+    return RsaaTargets::bytes_per_pixel(material_edges_) + pass_.bytes_per_pixel(in_place_);
   }
 
   void set_mask_output(GLuint texture) { mask_output_ = texture; }
