@@ -207,6 +207,7 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   }
   glActiveTexture(GLenum(active_texture_));
   for (int binding : uniform_bindings) uniform_buffers_.push_back(save_indexed_buffer(GL_UNIFORM_BUFFER, binding));
+  glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &generic_uniform_buffer_);
 }
 
 SavedState::~SavedState() {
@@ -219,6 +220,9 @@ SavedState::~SavedState() {
   }
   glActiveTexture(GLenum(active_texture_));
   for (const IndexedBufferBinding& u : uniform_buffers_) restore_indexed_buffer(u);
+  // After the indexed ones, which set it too: an engine's glBufferSubData(GL_UNIFORM_BUFFER, ...)
+  // would otherwise write into the buffer at the pass's binding (or fail with none there).
+  glBindBuffer(GL_UNIFORM_BUFFER, GLuint(generic_uniform_buffer_));
   glBindVertexArray(GLuint(vertex_array_));
   for (GLuint i = 0; i < GLuint(draw_buffers_.size()); ++i) {
     const DrawBufferState& d = draw_buffers_[i];

@@ -101,8 +101,9 @@ void restore_indexed_buffer(const IndexedBufferBinding& b);
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
 // bindings, viewport, current program, depth test/function/mask/range, polygon offset, blending and colour mask of
 // every draw buffer, scissor test, face culling, polygon mode, rasterizer discard, sample
-// shading, the vertex array, textures and sampler objects, uniform buffers (below). So that a
-// pass dropped into an engine leaves the engine's state as it found it.
+// shading, the vertex array, textures and sampler objects, uniform buffers (below, and the generic
+// GL_UNIFORM_BUFFER binding, which binding an indexed one also sets). So that a pass dropped into
+// an engine leaves the engine's state as it found it.
 class SavedState {
  public:
   // Also saves the 2D, 2D-array and 2D-multisample textures bound to `texture_units` and the
@@ -137,6 +138,7 @@ class SavedState {
   std::vector<UnitTextures> textures_;
   std::vector<DrawBufferState> draw_buffers_;  // blending and colour mask of every draw buffer
   std::vector<IndexedBufferBinding> uniform_buffers_;
+  GLint generic_uniform_buffer_ = 0;
 };
 
 // Saves and restores what a compute pass changes beside SavedState: the shader storage buffers

@@ -259,6 +259,14 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
     return gl::Buffer(b);
   }();
   glBindBufferRange(GL_UNIFORM_BUFFER, 13, engine_buffer.get(), 0, 128);  // the pass's binding
+  // The generic uniform buffer binding (glBufferSubData's target), which binding an indexed one sets.
+  const gl::Buffer engine_generic_uniforms = [] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, 64, nullptr, 0);
+    return gl::Buffer(b);
+  }();
+  glBindBuffer(GL_UNIFORM_BUFFER, engine_generic_uniforms.get());
   glEnable(GL_SAMPLE_SHADING);
   glMinSampleShading(0.25f);
   // ... and the state an engine leaves for its own draws: culling (the full-screen triangle
@@ -342,6 +350,9 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(GLuint(unit13), engine_texture.get());
   EXPECT_EQ(GLuint(uniform_buffer), engine_buffer.get());
   EXPECT_EQ(uniform_size, 128);
+  GLint generic_uniforms = 0;
+  glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &generic_uniforms);
+  EXPECT_EQ(GLuint(generic_uniforms), engine_generic_uniforms.get());
   EXPECT_TRUE(glIsEnabled(GL_SAMPLE_SHADING));
   EXPECT_EQ(min_sample_shading, 0.25f);
   GLint polygon_mode = 0, sampler = 0;
