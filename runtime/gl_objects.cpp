@@ -1,6 +1,7 @@
 #include "runtime/gl_objects.h"
 
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 
 #include "runtime/gl_context.h"
@@ -140,6 +141,16 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
 
 namespace rsaa::gl {
 
+namespace {
+
+// What decides which samples a fragment writes and how a written value combines (an engine may
+// turn them on for its own draws; the multisample pre-pass's codes and any integer code depend on
+// them): set_pass_state() turns GL_MULTISAMPLE on and the others off, SavedState restores them.
+constexpr GLenum kSampleCaps[] = {GL_MULTISAMPLE, GL_SAMPLE_MASK, GL_SAMPLE_COVERAGE, GL_SAMPLE_ALPHA_TO_COVERAGE,
+                                  GL_SAMPLE_ALPHA_TO_ONE, GL_COLOR_LOGIC_OP};
+
+}  // namespace
+
 IndexedBufferBinding save_indexed_buffer(GLenum target, int binding) {
   const bool uniform = target == GL_UNIFORM_BUFFER;
   IndexedBufferBinding b{target, binding, 0, 0, 0};
@@ -184,6 +195,8 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   sample_shading_ = glIsEnabled(GL_SAMPLE_SHADING);
   cull_face_ = glIsEnabled(GL_CULL_FACE);
   rasterizer_discard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
+  static_assert(std::size(kSampleCaps) == sizeof(sample_caps_) / sizeof(sample_caps_[0]), "one flag per capability");
+  for (std::size_t i = 0; i < std::size(kSampleCaps); ++i) sample_caps_[i] = glIsEnabled(kSampleCaps[i]);
   glGetIntegerv(GL_POLYGON_MODE, &polygon_mode_);
   GLint draw_buffers = 1;
   glGetIntegerv(GL_MAX_DRAW_BUFFERS, &draw_buffers);
@@ -231,6 +244,8 @@ SavedState::~SavedState() {
   }
   cull_face_ ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
   rasterizer_discard_ ? glEnable(GL_RASTERIZER_DISCARD) : glDisable(GL_RASTERIZER_DISCARD);
+  for (std::size_t i = 0; i < std::size(kSampleCaps); ++i)
+    sample_caps_[i] ? glEnable(kSampleCaps[i]) : glDisable(kSampleCaps[i]);
   glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_));
   scissor_ ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
   sample_shading_ ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);
@@ -292,6 +307,7 @@ void set_pass_state(bool depth_test) {
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_STENCIL_TEST);
   glStencilMask(0xFFFFFFFFu);
+  for (GLenum cap : kSampleCaps) cap == GL_MULTISAMPLE ? glEnable(cap) : glDisable(cap);
   depth_test ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
 }
 

@@ -125,6 +125,8 @@ class SavedState {
   GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, viewport_[4] = {}, program_ = 0;
   GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, scissor_ = GL_FALSE;
   GLboolean sample_shading_ = GL_FALSE, cull_face_ = GL_FALSE, rasterizer_discard_ = GL_FALSE;
+  // GL_MULTISAMPLE, the sample mask and coverage operations and the colour logic op (kSampleCaps).
+  GLboolean sample_caps_[6] = {};
   GLint polygon_mode_ = GL_FILL;
   GLdouble depth_range_[2] = {0.0, 1.0};
   GLboolean polygon_offset_fill_ = GL_FALSE;
@@ -164,7 +166,9 @@ class SavedComputeState {
 
 // The state a pass draws with, whatever the engine left: clears and writes reach every pixel
 // (no scissor, all masks on, no culling, filled polygons, no rasterizer discard, no polygon
-// offset), no blending, no stencil test, depth range [0, 1], depth test on (GL_LESS) or off.
+// offset), no blending, no stencil test, depth range [0, 1], depth test on (GL_LESS) or off;
+// every sample of a multisample target written (GL_MULTISAMPLE on, no sample mask, coverage
+// value or alpha to coverage/one) and the codes written as they are (no logic op).
 void set_pass_state(bool depth_test);
 
 // Throws std::invalid_argument naming `what` unless `texture` is an existing 2D texture of

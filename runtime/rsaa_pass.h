@@ -69,15 +69,17 @@
 //   u_material (uint)             with material_edges: the draw's material as written into
 //                                 centre_primitive's second channel (default 0)
 //
-// The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling
-// and rasterizer discard off, filled polygons, colour mask: the subsample's channel (jittered) or
-// all (multisample), for the multisample pre-pass sample shading on, and stencil test off, or,
+// The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling,
+// logic op and rasterizer discard off, filled polygons, colour mask: the subsample's channel
+// (jittered) or all (multisample), for the multisample pre-pass sample shading and GL_MULTISAMPLE
+// on, sample mask, coverage value and alpha to coverage off, and stencil test off, or,
 // with prepass_cull "neighbours", on (GL_EQUAL 1, no stencil writes).
 //
 // GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
 // program, depth test/function/mask, stencil test/functions/operations/masks, blending and
 // colour masks of every draw buffer, scissor test, culling, polygon mode, rasterizer discard,
-// sample shading, the vertex array, the textures and sampler objects bound to units 0-8 and to
+// sample shading, GL_MULTISAMPLE, sample mask and coverage, alpha to coverage/one, logic op, the
+// generic uniform buffer binding, the vertex array, the textures and sampler objects bound to units 0-8 and to
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
 // shader storage buffer at binding 0 (and the generic one), image units 0 and 1 and the
 // indirect-dispatch buffer; the engine's scissor, masks, culling and samplers do not reach the

@@ -444,6 +444,49 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   gl::check("state test");
 }
 
+// State an engine turns on for its own draws that decides which samples a fragment writes (the
+// multisample pre-pass: GL_MULTISAMPLE off, a sample mask, a coverage value) or how a code combines
+// with the one in the target (a logic op, the jittered pre-pass's integer codes) does not reach
+// the pass: the masks are those of a clean state, and the engine's state is as it was.
+TEST_F(RsaaPassApi, TheEnginesSampleAndLogicOpStateDoesNotReachThePrePass) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaSettings multisample;
+  multisample.pattern = "gl4x", multisample.prepass = "msaa";
+  for (RsaaSettings settings : {RsaaSettings{}, multisample}) {
+    settings.output_mask = true;
+    RsaaPass pass(settings, kWidth, kHeight);
+    const auto masks = [&] {
+      scene.render_subsamples(pass);
+      const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+      const gl::Texture mask = gl::make_texture_2d(GL_R32UI, kWidth, kHeight);
+      pass.resolve(scene.frame(), output.get(), mask.get());
+      return read_back_uints(mask.get(), kWidth, kHeight);
+    };
+    const std::vector<std::uint32_t> clean = masks();
+    const struct {
+      GLenum cap;
+      bool on;
+    } states[] = {{GL_MULTISAMPLE, false}, {GL_SAMPLE_MASK, true}, {GL_SAMPLE_COVERAGE, true}, {GL_COLOR_LOGIC_OP, true}};
+    glSampleMaski(0, 0x1u);
+    glSampleCoverage(0.25f, GL_FALSE);
+    glLogicOp(GL_XOR);
+    for (const auto& state : states) {
+      state.on ? glEnable(state.cap) : glDisable(state.cap);
+      const std::vector<std::uint32_t> engine = masks();
+      EXPECT_EQ(bool(glIsEnabled(state.cap)), state.on) << "capability 0x" << std::hex << state.cap;
+      state.on ? glDisable(state.cap) : glEnable(state.cap);
+      int differing = 0;
+      for (std::size_t p = 0; p < clean.size(); ++p) differing += clean[p] != engine[p];
+      EXPECT_EQ(differing, 0) << settings.prepass << " pre-pass, capability 0x" << std::hex << state.cap
+                              << (state.on ? " on" : " off");
+    }
+    glSampleMaski(0, ~0u);
+    glSampleCoverage(1.0f, GL_FALSE);
+    glLogicOp(GL_COPY);
+  }
+  gl::check("sample and logic op state");
+}
+
 // What an engine can get wrong without a GL error is refused: a colour texture without linear
 // filtering, a depth convention other than OpenGL's default, a program whose RsaaUniforms block
 // was moved to another binding.
