@@ -14,6 +14,7 @@ void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
 void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 void delete_program(GLuint id) { glDeleteProgram(id); }
 void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+void delete_sampler(GLuint id) { glDeleteSamplers(1, &id); }
 
 Texture make_texture_2d(GLenum internal_format, int width, int height, GLenum filter) {
   GLuint id = 0;
@@ -43,6 +44,18 @@ Texture make_texture_2d_multisample(GLenum internal_format, int width, int heigh
   glTextureStorage2DMultisample(id, samples, internal_format, width, height, GL_TRUE);
   check("make_texture_2d_multisample");
   return Texture(id);
+}
+
+Sampler make_sampler(GLenum filter) {
+  GLuint id = 0;
+  glCreateSamplers(1, &id);
+  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  check("make_sampler");
+  return Sampler(id);
 }
 
 Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth) {

@@ -41,6 +41,7 @@ void delete_buffer(GLuint id);
 void delete_vertex_array(GLuint id);
 void delete_program(GLuint id);
 void delete_query(GLuint id);
+void delete_sampler(GLuint id);
 
 using Texture = Handle<delete_texture>;
 using Framebuffer = Handle<delete_framebuffer>;
@@ -48,11 +49,16 @@ using Buffer = Handle<delete_buffer>;
 using VertexArray = Handle<delete_vertex_array>;
 using Program = Handle<delete_program>;
 using Query = Handle<delete_query>;
+using Sampler = Handle<delete_sampler>;
 
 // An immutable 2D (or 2D-array when layers > 0, or multisample when samples > 0) texture.
 Texture make_texture_2d(GLenum internal_format, int width, int height, GLenum filter = GL_NEAREST);
 Texture make_texture_2d_array(GLenum internal_format, int width, int height, int layers);
 Texture make_texture_2d_multisample(GLenum internal_format, int width, int height, int samples);
+// A sampler object with `filter` for minification and magnification (no mipmaps), clamped to
+// the edge, no depth comparison: read through it, a texture's own sampling parameters (and its
+// completeness under them) do not matter.
+Sampler make_sampler(GLenum filter);
 
 // A framebuffer with the given colour attachments (in order) and an optional depth attachment;
 // throws GlError if incomplete. layer >= 0 attaches that layer of an array texture.

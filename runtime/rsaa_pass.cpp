@@ -37,6 +37,12 @@ struct RsaaPass::Objects {
   gl::Framebuffer multisample_target2;
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
+  // Every texture the pass reads is read through these (the colour bilinear, the others
+  // nearest), not through the texture's own parameters nor an engine's sampler objects: a
+  // texture's default GL_REPEAT wrap blended the opposite image border into edge pixels, and a
+  // texture incomplete under its own filters (glTexImage2D's default mipmap minification, an
+  // integer texture filtered linearly, or an engine's sampler object on a unit) reads as zero.
+  gl::Sampler bilinear, nearest;
   gl::Program subsample_program, post_program;
   // The culled jittered pre-pass: the marking program and its target (every code texture and
   // the subsample depth-stencil).
@@ -397,6 +403,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   const OffsetTable table = table_of(settings);
   pattern_ = table.pattern;
   gl_->table = table_texture(table);
+  gl_->bilinear = gl::make_sampler(GL_LINEAR);
+  gl_->nearest = gl::make_sampler(GL_NEAREST);
 
   const int n = pattern_.size();
   if (settings.post != "edges" && settings.post != "single" && settings.post != "compute")
@@ -535,6 +543,8 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
   write_frame_uniforms(frame);
   const GLuint textures[3] = {frame.centre_normal, frame.centre_primitive, frame.centre_depth};
   glBindTextures(GLuint(first), 3, textures);
+  const GLuint samplers[3] = {gl_->nearest.get(), gl_->nearest.get(), gl_->nearest.get()};
+  glBindSamplers(GLuint(first), 3, samplers);
   const GLuint zero[4] = {0, 0, 0, 0};
   const bool reverse_z = settings_.depth == "reverse-z";
   const GLfloat far_depth = reverse_z ? 0.0f : 1.0f;
@@ -655,6 +665,12 @@ void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const 
       if (GLuint(texture) != expected_textures[k])
         throw std::logic_error("RSAA pre-pass: the engine's draw rebound texture unit " + std::to_string(first + k) +
                                " (RsaaSettings::prepass_first_unit + " + std::to_string(k) + ")");
+      GLint sampler = 0;  // another sampler object (a linear one) makes the integer textures read as zero
+      glGetIntegeri_v(GL_SAMPLER_BINDING, GLuint(first + k), &sampler);
+      if (GLuint(sampler) != gl_->nearest.get())
+        throw std::logic_error("RSAA pre-pass: the engine's draw bound sampler object " + std::to_string(sampler) +
+                               " to texture unit " + std::to_string(first + k) + " (RsaaSettings::prepass_first_unit + " +
+                               std::to_string(k) + ")");
     }
   });
 }
@@ -678,7 +694,9 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     targets.push_back({mask_output});
   }
   write_frame_uniforms(frame);
-  glBindSamplers(0, kPostUnits, nullptr);  // the textures' own filtering (an engine's sampler objects are restored)
+  std::vector<GLuint> samplers(kPostUnits, gl_->nearest.get());  // (an engine's sampler objects are restored)
+  samplers[kColourUnit] = gl_->bilinear.get();
+  glBindSamplers(0, kPostUnits, samplers.data());
   glBindTextureUnit(kColourUnit, frame.colour);
   glBindTextureUnit(kNormalUnit, frame.centre_normal);
   glBindTextureUnit(kDepthUnit, frame.centre_depth);

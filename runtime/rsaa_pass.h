@@ -24,7 +24,10 @@
 // RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
 // and resolve() check the four (name, format, size, the colour's linear filter) and throw
 // std::invalid_argument naming the field, so a forgotten or wrong binding is an error, not a
-// wrong image.
+// wrong image. The pass reads the four through its own sampler objects (the colour bilinear and
+// clamped to the edge, the others nearest): their own wrap modes, minification filters, depth
+// comparison and completeness under them (a glTexImage2D texture with the default mipmap filter)
+// do not matter.
 //
 // DEPTH CONVENTION (RsaaSettings::depth). "gl", OpenGL's default: glClipControl(GL_LOWER_LEFT,
 // GL_NEGATIVE_ONE_TO_ONE), nearer is less, inverse_projection maps NDC (z = 2 depth - 1) to view
@@ -45,8 +48,8 @@
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
 // frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample;
 // twice for a union pattern). Before each call the pass binds its framebuffer, the viewport, the
-// pre-pass state below, the uniform block at settings.uniform_binding and three textures at units
-// settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
+// pre-pass state below, the uniform block at settings.uniform_binding and three textures (and its
+// nearest sampler objects) at units settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
 // set culling for its geometry, but must draw with the colour mask, depth test, function and
 // writes and blending the pass set (the codes depend on them; state it changes after drawing is
 // its own business). After each call the pass checks that the current program declares the

@@ -195,6 +195,14 @@ TEST_F(RsaaPassApi, AnEngineProgramWithoutTheBlockOrThatRebindsAUnitIsAnError) {
               glBindTextureUnit(14, material.get());
             }).find("rebound texture unit 14"),
             std::string::npos);
+  GLuint linear = 0;
+  glCreateSamplers(1, &linear);
+  EXPECT_NE(logic_error_of([&] {
+              glUseProgram(engine.get());
+              glBindSampler(15, linear);
+            }).find("bound sampler object " + std::to_string(linear) + " to texture unit 15"),
+            std::string::npos);
+  glDeleteSamplers(1, &linear);
   EXPECT_EQ(logic_error_of([&] { glUseProgram(engine.get()); }), "");
   gl::check("after the refused draws");
 }
@@ -485,6 +493,92 @@ TEST_F(RsaaPassApi, TheEnginesSampleAndLogicOpStateDoesNotReachThePrePass) {
     glLogicOp(GL_COPY);
   }
   gl::check("sample and logic op state");
+}
+
+// The pass reads the frame through its own sampler objects: the frame textures' own sampling
+// parameters and an engine's sampler objects do not change the image or the masks. Without them
+// a GL_REPEAT colour (GL's default) blended the opposite image border into edge pixels, and a
+// texture incomplete under its parameters read as zero: a glTexImage2D colour with the default
+// mipmap minification filter (black edge pixels), integer G-buffer textures filtered linearly, an
+// engine's linear sampler object on the pre-pass's units (most masks wrong).
+TEST_F(RsaaPassApi, TheFramesSamplingParametersAndAnEnginesSamplersDoNotReachThePass) {
+  constexpr int width = 160, height = 120;
+  const test::SceneFrame scene("builtin:default", width, height);
+  RsaaSettings settings;
+  settings.output_mask = true;
+  RsaaPass pass(settings, width, height);
+  struct Result {
+    Image image;
+    std::vector<std::uint32_t> masks;
+  };
+  const auto run = [&](const RsaaFrame& frame) {
+    scene.render_subsamples(pass);
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+    const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+    pass.resolve(frame, output.get(), mask.get());
+    return Result{read_back_image(output.get(), width, height), read_back_uints(mask.get(), width, height)};
+  };
+  const auto expect_same = [&](const Result& a, const Result& b, const char* what) {
+    int differing_colour = 0, differing_mask = 0;
+    for (std::size_t p = 0; p < a.masks.size(); ++p) {
+      const Rgb x = a.image.pixels[p], y = b.image.pixels[p];
+      differing_colour += x.r != y.r || x.g != y.g || x.b != y.b;
+      differing_mask += a.masks[p] != b.masks[p];
+    }
+    EXPECT_EQ(differing_colour, 0) << what;
+    EXPECT_EQ(differing_mask, 0) << what;
+  };
+  const RsaaFrame frame = scene.frame();
+  const Result clean = run(frame);
+  const Image one_x = read_back_image(frame.colour, width, height);
+  int resampled = 0;
+  for (std::size_t p = 0; p < one_x.pixels.size(); ++p) resampled += clean.image.pixels[p].r != one_x.pixels[p].r;
+  EXPECT_GT(resampled, 100);  // the comparisons cover resolved pixels
+
+  // An engine's trilinear, repeating sampler object on every unit the pass reads.
+  GLuint engine_sampler = 0;
+  glCreateSamplers(1, &engine_sampler);
+  glSamplerParameteri(engine_sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glSamplerParameteri(engine_sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLuint unit = 0; unit < 16; ++unit) glBindSampler(unit, engine_sampler);
+  expect_same(clean, run(frame), "an engine's sampler objects");
+  for (GLuint unit = 0; unit < 16; ++unit) glBindSampler(unit, 0);
+  glDeleteSamplers(1, &engine_sampler);
+
+  // The textures' own parameters: a repeating colour, linearly filtered integer textures (incomplete),
+  // a depth comparison.
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glTextureParameteri(frame.colour, wrap, GL_REPEAT);
+  for (GLuint integer : {frame.centre_normal, frame.centre_primitive}) {
+    glTextureParameteri(integer, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(integer, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  }
+  glTextureParameteri(frame.centre_depth, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  expect_same(clean, run(frame), "the textures' own parameters");
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glTextureParameteri(frame.colour, wrap, GL_CLAMP_TO_EDGE);
+  for (GLuint integer : {frame.centre_normal, frame.centre_primitive}) {
+    glTextureParameteri(integer, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(integer, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  glTextureParameteri(frame.centre_depth, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+
+  // A colour made as glTexImage2D leaves it: level 0 only, the mipmap minification filter
+  // (incomplete), only the magnification filter set as the pass asks.
+  const gl::Texture incomplete = [&] {
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    std::vector<float> texels(std::size_t(width) * height * 4);
+    glGetTextureImage(frame.colour, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+    glTextureSubImage2D(t, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+    return gl::Texture(t);
+  }();
+  RsaaFrame incomplete_colour = frame;
+  incomplete_colour.colour = incomplete.get();
+  expect_same(clean, run(incomplete_colour), "an incomplete colour");
+  gl::check("sampling parameters");
 }
 
 // What an engine can get wrong without a GL error is refused: a colour texture without linear
