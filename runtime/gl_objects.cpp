@@ -58,30 +58,41 @@ Sampler make_sampler(GLenum filter) {
   return Sampler(id);
 }
 
-Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth) {
-  GLuint id = 0;
-  glCreateFramebuffers(1, &id);
-  Framebuffer fb(id);
-  std::vector<GLenum> buffers;
+namespace {
+
+// Attaches `colour` (in order) and `depth` to framebuffer `id`.
+void attach_all(GLuint id, const std::vector<Attachment>& colour, Attachment depth) {
   const auto attach = [&](GLenum point, const Attachment& a) {
     if (a.layer >= 0)
       glNamedFramebufferTextureLayer(id, point, a.texture, 0, a.layer);
     else
       glNamedFramebufferTexture(id, point, a.texture, 0);
   };
-  for (std::size_t i = 0; i < colour.size(); ++i) {
-    attach(GLenum(GL_COLOR_ATTACHMENT0 + i), colour[i]);
-    buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
-  }
+  for (std::size_t i = 0; i < colour.size(); ++i) attach(GLenum(GL_COLOR_ATTACHMENT0 + i), colour[i]);
   if (depth.texture) {
     GLint stencil_bits = 0;  // a depth-stencil texture attaches both
     glGetTextureLevelParameteriv(depth.texture, 0, GL_TEXTURE_STENCIL_SIZE, &stencil_bits);
     attach(stencil_bits > 0 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth);
   }
-  glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+}
+
+void require_complete(GLuint id) {
   const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw GlError("framebuffer incomplete (status " + std::to_string(status) + ")");
+}
+
+}  // namespace
+
+Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth) {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  Framebuffer fb(id);
+  attach_all(id, colour, depth);
+  std::vector<GLenum> buffers;
+  for (std::size_t i = 0; i < colour.size(); ++i) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+  glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+  require_complete(id);
   check("make_framebuffer");
   return fb;
 }
@@ -93,7 +104,15 @@ GLuint CachedFramebuffer::get(const std::vector<Attachment>& colour, Attachment 
   if (key != key_ || !framebuffer_.get()) {
     framebuffer_ = make_framebuffer(colour, depth);
     key_ = key;
+    return framebuffer_.get();
   }
+  // The same names, attached again: a texture deleted while this framebuffer was not bound stays
+  // attached to it, and a driver that reuses names (most do; Mesa with force_gl_names_reuse) gives
+  // its name to the next texture made, which this framebuffer would then never reach (the pass
+  // wrote into the deleted texture and left the engine's new output untouched). Attaching the
+  // object already attached changes nothing.
+  attach_all(framebuffer_.get(), colour, depth);
+  require_complete(framebuffer_.get());
   return framebuffer_.get();
 }
 

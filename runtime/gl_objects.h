@@ -68,8 +68,10 @@ struct Attachment {
 };
 Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth = {});
 
-// A framebuffer for caller-provided output textures, made again only when they change: a new
-// framebuffer every frame costs llvmpipe more than the frame itself (it re-specialises shaders).
+// A framebuffer for caller-provided output textures, made again only when their names change: a
+// new framebuffer every frame costs llvmpipe more than the frame itself (it re-specialises
+// shaders). The textures are attached again at every get() (a deleted texture's name may come
+// back as another texture).
 class CachedFramebuffer {
  public:
   GLuint get(const std::vector<Attachment>& colour, Attachment depth = {});

@@ -939,3 +939,77 @@ TEST_F(RsaaPassApi, ZeroToOneAndReverseZDepthGiveTheDefaultMasks) {
 
 }  // namespace
 }  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// A context whose driver gives a deleted object's name to the next object made, as most drivers
+// do (Mesa does so only with its force_gl_names_reuse option, read when the context is made).
+class RsaaPassApiReusedNames : public test::GlTest {
+ protected:
+  static void SetUpTestSuite() {
+    setenv("force_gl_names_reuse", "true", 1);
+    test::GlTest::SetUpTestSuite();
+    unsetenv("force_gl_names_reuse");
+  }
+};
+
+// An engine that deletes its output or colour texture and makes another of the same format and
+// size gets the new one resolved, though its name is the old one's: the pass's framebuffers, made
+// for the old texture and not bound when it was deleted, still held it (the copy and the fragment
+// passes wrote into the deleted output, or copied the deleted colour).
+TEST_F(RsaaPassApiReusedNames, ATextureMadeUnderADeletedOnesNameIsTheOneResolved) {
+  constexpr int width = 64, height = 48;
+  GLuint first = 0, second = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &first);
+  glDeleteTextures(1, &first);
+  glCreateTextures(GL_TEXTURE_2D, 1, &second);
+  glDeleteTextures(1, &second);
+  if (first != second) GTEST_SKIP() << "this driver does not reuse names";
+  const test::SceneFrame scene("builtin:default", width, height);
+  const auto texture_like_output = [&] { return gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR); };
+  for (const char* post : {"compute", "edges", "single"}) {
+    SCOPED_TRACE(post);
+    RsaaSettings settings;
+    settings.post = post;
+    RsaaPass pass(settings, width, height);
+    scene.render_subsamples(pass);
+    // The output.
+    gl::Texture output = texture_like_output();
+    pass.resolve(scene.frame(), output.get());
+    const Image expected = read_back_image(output.get(), width, height);
+    const GLuint old_name = output.get();
+    output.reset();
+    output = texture_like_output();
+    ASSERT_EQ(output.get(), old_name);
+    pass.resolve(scene.frame(), output.get());
+    const Image again = read_back_image(output.get(), width, height);
+    int differing = 0;
+    for (std::size_t p = 0; p < expected.pixels.size(); ++p) {
+      const Rgb a = expected.pixels[p], b = again.pixels[p];
+      differing += a.r != b.r || a.g != b.g || a.b != b.b;
+    }
+    EXPECT_EQ(differing, 0) << "a new output under the old one's name";
+    // The colour: one frame's, then another texture of one grey under its name.
+    gl::Texture colour = texture_like_output();
+    const float frame_grey[4] = {0.75f, 0.75f, 0.75f, 1.0f}, grey[4] = {0.25f, 0.25f, 0.25f, 1.0f};
+    glClearTexImage(colour.get(), 0, GL_RGBA, GL_FLOAT, frame_grey);
+    RsaaFrame frame = scene.frame();
+    frame.colour = colour.get();
+    pass.resolve(frame, output.get());
+    const GLuint old_colour = colour.get();
+    colour.reset();
+    colour = texture_like_output();
+    ASSERT_EQ(colour.get(), old_colour);
+    glClearTexImage(colour.get(), 0, GL_RGBA, GL_FLOAT, grey);
+    pass.resolve(frame, output.get());
+    const Image resolved = read_back_image(output.get(), width, height);
+    int not_grey = 0;
+    for (const Rgb& p : resolved.pixels) not_grey += p.r != 0.25f || p.g != 0.25f || p.b != 0.25f;
+    EXPECT_EQ(not_grey, 0) << "a new colour under the old one's name";
+  }
+  gl::check("names reused");
+}
+
+}  // namespace
+}  // namespace rsaa
