@@ -46,6 +46,26 @@ Texture make_texture_2d_multisample(GLenum internal_format, int width, int heigh
   return Texture(id);
 }
 
+void upload_texels_2d(GLuint texture, int width, int height, GLenum format, GLenum type, const void* data) {
+  // The unpack parameters and their defaults (GL 4.5 table 8.1).
+  const struct {
+    GLenum name;
+    GLint initial;
+  } parameters[] = {{GL_UNPACK_SWAP_BYTES, GL_FALSE}, {GL_UNPACK_LSB_FIRST, GL_FALSE}, {GL_UNPACK_ROW_LENGTH, 0},
+                    {GL_UNPACK_IMAGE_HEIGHT, 0},     {GL_UNPACK_SKIP_ROWS, 0},       {GL_UNPACK_SKIP_PIXELS, 0},
+                    {GL_UNPACK_SKIP_IMAGES, 0},      {GL_UNPACK_ALIGNMENT, 4}};
+  GLint saved[std::size(parameters)] = {}, unpack_buffer = 0;
+  glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  for (std::size_t i = 0; i < std::size(parameters); ++i) {
+    glGetIntegerv(parameters[i].name, &saved[i]);
+    glPixelStorei(parameters[i].name, parameters[i].initial);
+  }
+  glTextureSubImage2D(texture, 0, 0, 0, width, height, format, type, data);
+  for (std::size_t i = 0; i < std::size(parameters); ++i) glPixelStorei(parameters[i].name, saved[i]);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpack_buffer));
+}
+
 Sampler make_sampler(GLenum filter) {
   GLuint id = 0;
   glCreateSamplers(1, &id);

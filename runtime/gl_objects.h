@@ -55,6 +55,11 @@ using Sampler = Handle<delete_sampler>;
 Texture make_texture_2d(GLenum internal_format, int width, int height, GLenum filter = GL_NEAREST);
 Texture make_texture_2d_array(GLenum internal_format, int width, int height, int layers);
 Texture make_texture_2d_multisample(GLenum internal_format, int width, int height, int samples);
+// Uploads width x height texels of `data` (client memory, tightly packed) into level 0 of
+// `texture`, whatever pixel unpack state the caller left (a bound GL_PIXEL_UNPACK_BUFFER would
+// turn the pointer into an offset, GL_UNPACK_ROW_LENGTH or SKIP_* would read elsewhere); that
+// state is as it was after.
+void upload_texels_2d(GLuint texture, int width, int height, GLenum format, GLenum type, const void* data);
 // A sampler object with `filter` for minification and magnification (no mipmaps), clamped to
 // the edge, no depth comparison: read through it, a texture's own sampling parameters (and its
 // completeness under them) do not matter.

@@ -144,7 +144,7 @@ gl::Texture table_texture(const OffsetTable& table) {
     t[2] = float(std::max(0, representative_dissimilar(table.pattern, Mask(mask))));
   }
   gl::Texture texture = gl::make_texture_2d(GL_RGBA32F, width, height);
-  glTextureSubImage2D(texture.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+  gl::upload_texels_2d(texture.get(), width, height, GL_RGBA, GL_FLOAT, texels.data());
   return texture;
 }
 
@@ -330,14 +330,18 @@ SamplePattern query_gl_sample_pattern(int samples) {
     throw std::invalid_argument("the GL driver (" + renderer() + ") gives " + std::to_string(actual) + " samples for " +
                                 std::to_string(samples) + ": it has no " + std::to_string(samples) + "-sample pattern");
   const gl::Framebuffer fb = gl::make_framebuffer({{texture.get()}});
-  glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+  // The positions are the draw framebuffer's: bound meanwhile, the engine's bound again after
+  // (RsaaPass's constructor calls this; it left the engine drawing into the default framebuffer).
+  GLint engine_framebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &engine_framebuffer);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fb.get());
   std::vector<Vec2> positions;
   for (int i = 0; i < samples; ++i) {
     GLfloat p[2];
     glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(i), p);
     positions.push_back({p[0], p[1]});
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(engine_framebuffer));
   gl::check("reading the driver's sample positions");
   return pattern_from_gl_positions("gl" + std::to_string(samples) + "x", positions);
 }

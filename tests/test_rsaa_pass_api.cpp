@@ -581,6 +581,67 @@ TEST_F(RsaaPassApi, TheFramesSamplingParametersAndAnEnginesSamplersDoNotReachThe
   gl::check("sampling parameters");
 }
 
+// Making a pass leaves the engine's framebuffer bindings as they were (reading the driver's
+// sample positions, for gl4x or the multisample pre-pass, bound the default framebuffer after),
+// and the engine's pixel unpack state does not reach the table the pass uploads (a bound unpack
+// buffer failed with GL_INVALID_OPERATION, GL_UNPACK_SKIP_PIXELS shifted the table).
+TEST_F(RsaaPassApi, MakingAPassLeavesTheEnginesFramebufferAndUnpackStateAlone) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaSettings multisample;
+  multisample.pattern = "gl4x", multisample.prepass = "msaa";
+  const gl::Texture draw_texture = gl::make_texture_2d(GL_RGBA8, 4, 4), read_texture = gl::make_texture_2d(GL_RGBA8, 4, 4);
+  const gl::Framebuffer draw_framebuffer = gl::make_framebuffer({{draw_texture.get()}});
+  const gl::Framebuffer read_framebuffer = gl::make_framebuffer({{read_texture.get()}});
+  const gl::Buffer unpack_buffer = [] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, 64, nullptr, 0);
+    return gl::Buffer(b);
+  }();
+  for (const RsaaSettings& settings : {RsaaSettings{}, multisample}) {
+    const auto image = [&](RsaaPass& pass) {
+      scene.render_subsamples(pass);
+      const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+      pass.resolve(scene.frame(), output.get());
+      return read_back_image(output.get(), kWidth, kHeight);
+    };
+    RsaaPass clean_pass(settings, kWidth, kHeight);
+    const Image clean = image(clean_pass);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_framebuffer.get());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, read_framebuffer.get());
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, unpack_buffer.get());
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+    std::optional<RsaaPass> pass;
+    try {
+      pass.emplace(settings, kWidth, kHeight);
+    } catch (const gl::GlError& e) {
+      ADD_FAILURE() << settings.pattern << ": " << e.what();
+    }
+    GLint draw = 0, read = 0, unpack = 0, skip_pixels = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack);
+    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skip_pixels);
+    EXPECT_EQ(GLuint(draw), draw_framebuffer.get()) << settings.pattern;
+    EXPECT_EQ(GLuint(read), read_framebuffer.get()) << settings.pattern;
+    EXPECT_EQ(GLuint(unpack), unpack_buffer.get()) << settings.pattern;
+    EXPECT_EQ(skip_pixels, 3) << settings.pattern;
+    // Without the unpack buffer (a shifted table then gave another image).
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    if (!pass) pass.emplace(settings, kWidth, kHeight);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const Image engine = image(*pass);
+    int differing = 0;
+    for (std::size_t p = 0; p < clean.pixels.size(); ++p) {
+      const Rgb a = clean.pixels[p], b = engine.pixels[p];
+      differing += a.r != b.r || a.g != b.g || a.b != b.b;
+    }
+    EXPECT_EQ(differing, 0) << settings.pattern;
+  }
+  gl::check("making passes");
+}
+
 // What an engine can get wrong without a GL error is refused: a colour texture without linear
 // filtering, a depth convention other than OpenGL's default, a program whose RsaaUniforms block
 // was moved to another binding.
