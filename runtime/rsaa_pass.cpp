@@ -299,6 +299,10 @@ void RsaaTargets::use_colour(GlName colour) {
 }
 
 void RsaaTargets::clear(const float background[3], float far_depth) const {
+  // Clears obey the scissor test and the colour and depth masks: the engine's (a depth mask left
+  // off after its transparent draws, a scissor left on) left pixels of the last frame.
+  const gl::SavedState saved({});
+  gl::set_pass_state(false);
   const GLfloat colour[4] = {background[0], background[1], background[2], 1.0f};
   const GLuint zero[4] = {0, 0, 0, 0};
   const GLuint framebuffer = gl_->framebuffer.get();

@@ -218,7 +218,7 @@ class RsaaTargets {
   RsaaTargets& operator=(RsaaTargets&&) noexcept;
 
   // Colour to `background` (linear RGB), normal and primitive to 0 (background), depth to
-  // `far_depth` (0 for reverse Z).
+  // `far_depth` (0 for reverse Z): every pixel, whatever scissor test and masks the GL has.
   void clear(const float background[3], float far_depth = 1.0f) const;
   // Binds the framebuffer to GL_FRAMEBUFFER: colour at location 0, normal 1, primitive (and
   // material) 2, depth.

@@ -642,6 +642,36 @@ TEST_F(RsaaPassApi, MakingAPassLeavesTheEnginesFramebufferAndUnpackStateAlone) {
   gl::check("making passes");
 }
 
+// RsaaTargets::clear() clears every pixel of the four targets whatever scissor test and masks the
+// engine left (a clear obeys them), and leaves them as they were.
+TEST_F(RsaaPassApi, TheTargetsClearIgnoresTheEnginesScissorAndMasks) {
+  RsaaTargets targets(8, 8);
+  const float background[3] = {0.5f, 0.25f, 0.125f};
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, 1, 1);
+  glColorMask(GL_FALSE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_FALSE);
+  targets.clear(background, 0.5f);
+  EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST));
+  GLboolean colour_mask[4] = {}, depth_mask = GL_TRUE;
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour_mask);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask);
+  EXPECT_EQ(colour_mask[0], GL_FALSE);
+  EXPECT_EQ(depth_mask, GL_FALSE);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  const RsaaFrame frame = targets.frame(glm::mat4(1.0f));
+  const Image colour = read_back_image(frame.colour, 8, 8);
+  std::vector<float> depth(64);
+  glGetTextureImage(frame.centre_depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
+  int wrong = 0;
+  for (const Rgb& p : colour.pixels) wrong += p.r != 0.5f || p.g != 0.25f || p.b != 0.125f;
+  for (float d : depth) wrong += d != 0.5f;
+  EXPECT_EQ(wrong, 0);
+  gl::check("clearing the targets");
+}
+
 // What an engine can get wrong without a GL error is refused: a colour texture without linear
 // filtering, a depth convention other than OpenGL's default, a program whose RsaaUniforms block
 // was moved to another binding.
