@@ -276,6 +276,7 @@ glm::ivec2 window_step(Vec2 sample) {
 
 RsaaTargets::RsaaTargets(int width, int height, bool material_edges)
     : width_(width), height_(height), gl_(std::make_unique<Objects>()) {
+  gl::check_none_pending("RsaaTargets::RsaaTargets");
   gl_->colour = gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR);
   gl_->normal = gl::make_texture_2d(GL_RG16UI, width, height);
   gl_->primitive = gl::make_texture_2d(material_edges ? GL_RG32UI : GL_R32UI, width, height);
@@ -395,6 +396,7 @@ std::string rsaa_shader_file(const std::string& name) { return gl::shader_source
 
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     : settings_(settings), width_(width), height_(height), gl_(std::make_unique<Objects>()) {
+  gl::check_none_pending("RsaaPass::RsaaPass");
   if (settings.auth < 0 || settings.auth > 2)
     throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
   if (!(settings.threshold >= 0.0f)) throw std::invalid_argument("RSAA threshold must be >= 0");
@@ -544,6 +546,7 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
 }
 
 void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw) {
+  gl::check_none_pending("RsaaPass::render_subsamples");
   validate_frame(frame, width_, height_, settings_);
   const int first = settings_.prepass_first_unit;
   const gl::SavedState saved({first, first + 1, first + 2}, {settings_.uniform_binding});
@@ -684,6 +687,7 @@ void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const 
 }
 
 void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
+  gl::check_none_pending("RsaaPass::resolve");
   validate_frame(frame, width_, height_, settings_);
   gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
   if (settings_.output_mask && mask_output)

@@ -87,6 +87,8 @@
 // shader storage buffer at binding 0 (and the generic one), image units 0 and 1 and the
 // indirect-dispatch buffer; the engine's scissor, masks, culling and samplers do not reach the
 // pass. (A program the engine deleted while current cannot be restored: none is current after.)
+// A GL error already set when a call begins is the engine's: the call throws std::runtime_error
+// (gl::GlError) saying so, before it does anything.
 // Textures and programs they create belong to the RsaaPass object.
 #pragma once
 

@@ -672,6 +672,42 @@ TEST_F(RsaaPassApi, TheTargetsClearIgnoresTheEnginesScissorAndMasks) {
   gl::check("clearing the targets");
 }
 
+// A GL error the engine left set is reported as the engine's, by the call that finds it, before
+// the call does anything: it was reported as the pass's ("GL error 0x0500 in make_framebuffer",
+// from inside the resolve, or "in make_texture_2d" making a pass).
+TEST_F(RsaaPassApi, AGlErrorTheEngineLeftIsReportedAsItsOwn) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  const auto message_of = [](const std::function<void()>& call) -> std::string {
+    glEnable(GLenum(0xDEAD));  // GL_INVALID_ENUM, the engine's
+    try {
+      call();
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string made = message_of([&] { RsaaPass(RsaaSettings{}, kWidth, kHeight); });
+  EXPECT_NE(made.find("0x0500 was already set when RsaaPass::RsaaPass was called"), std::string::npos) << made;
+  EXPECT_NE(message_of([&] { RsaaTargets(kWidth, kHeight); }).find("when RsaaTargets::RsaaTargets was called"),
+            std::string::npos);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  EXPECT_NE(message_of([&] { scene.render_subsamples(pass); }).find("when RsaaPass::render_subsamples was called"),
+            std::string::npos);
+  scene.render_subsamples(pass);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  const float marker[4] = {-1.0f, -1.0f, -1.0f, -1.0f};
+  glClearTexImage(output.get(), 0, GL_RGBA, GL_FLOAT, marker);
+  const std::string resolved = message_of([&] { pass.resolve(scene.frame(), output.get()); });
+  EXPECT_NE(resolved.find("when RsaaPass::resolve was called: an earlier GL call of the caller's failed"),
+            std::string::npos)
+      << resolved;
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  int written = 0;
+  for (const Rgb& p : read_back_image(output.get(), kWidth, kHeight).pixels) written += p.r != -1.0f;
+  EXPECT_EQ(written, 0);  // the refused call did nothing
+  pass.resolve(scene.frame(), output.get());  // the next call works
+}
+
 // What an engine can get wrong without a GL error is refused: a colour texture without linear
 // filtering, a depth convention other than OpenGL's default, a program whose RsaaUniforms block
 // was moved to another binding.
