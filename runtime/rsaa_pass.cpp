@@ -548,6 +548,7 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
 void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw) {
   gl::check_none_pending("RsaaPass::render_subsamples");
   validate_frame(frame, width_, height_, settings_);
+  codes_ready_ = false;  // until every draw is done (a callback may throw)
   const int first = settings_.prepass_first_unit;
   const gl::SavedState saved({first, first + 1, first + 2}, {settings_.uniform_binding});
   gl::set_pass_state(true);  // before the clears: they obey the engine's scissor and masks
@@ -587,6 +588,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       draw(-1, jitter);
     }
     gl::check("RSAA pre-pass (multisample)");
+    codes_ready_ = true;
     return;
   }
   if (cull_) {
@@ -628,6 +630,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     draw(i, jitter);
   }
   gl::check("RSAA pre-pass");
+  codes_ready_ = true;
 }
 
 void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
@@ -696,6 +699,10 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     throw std::invalid_argument("RsaaPass::resolve: the output is the frame's colour texture; resolving in place needs "
                                 "RsaaSettings::post \"compute\", not \"" + settings_.post +
                                 "\" (which reads the colour while it writes it)");
+  // Codes never written are undefined (zeros on llvmpipe: a third of a frame's pixels resampled).
+  if (!codes_ready_)
+    throw std::logic_error("RsaaPass::resolve before render_subsamples (or after one that did not finish): "
+                           "the pass has no similarity codes for this frame");
   std::vector<int> units;
   for (int unit = 0; unit < kPostUnits; ++unit) units.push_back(unit);
   const gl::SavedState saved(units, {settings_.uniform_binding});

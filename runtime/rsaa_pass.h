@@ -264,7 +264,8 @@ class RsaaPass {
   // rsaa_prepass.glsl with its includes expanded.
   std::string prepass_glsl() const;
   // Writes the anti-aliased colour into `output` (RGBA16F, the frame's size), and the mask into
-  // `mask_output` (R32UI) when settings.output_mask.
+  // `mask_output` (R32UI) when settings.output_mask. Throws std::logic_error before any pre-pass
+  // (or after one that did not finish): there are no codes to resolve with.
   void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
 
   const SamplePattern& pattern() const { return pattern_; }
@@ -292,6 +293,7 @@ class RsaaPass {
   bool union_ = false;   // the multisample pre-pass as two draws of half the samples (union pattern)
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
+  bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
   int width_, height_;
   std::unique_ptr<Objects> gl_;
 };

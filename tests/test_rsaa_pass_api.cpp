@@ -708,6 +708,29 @@ TEST_F(RsaaPassApi, AGlErrorTheEngineLeftIsReportedAsItsOwn) {
   pass.resolve(scene.frame(), output.get());  // the next call works
 }
 
+// resolve() with no codes (no pre-pass yet, or one whose callback threw) is an error: the code
+// textures were undefined (zeros on llvmpipe: a third of the default scene's pixels resampled).
+TEST_F(RsaaPassApi, ResolvingWithoutAFinishedPrePassIsAnError) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  const auto logic_error_of = [&] {
+    try {
+      pass.resolve(scene.frame(), output.get());
+    } catch (const std::logic_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(logic_error_of().find("RsaaPass::resolve before render_subsamples"), std::string::npos);
+  scene.render_subsamples(pass);
+  EXPECT_EQ(logic_error_of(), "");
+  EXPECT_THROW(pass.render_subsamples(scene.frame(), [](GLuint, glm::vec2) { throw std::runtime_error("engine"); }),
+               std::runtime_error);
+  EXPECT_NE(logic_error_of().find("did not finish"), std::string::npos);
+  gl::check("resolving without codes");
+}
+
 // What an engine can get wrong without a GL error is refused: a colour texture without linear
 // filtering, a depth convention other than OpenGL's default, a program whose RsaaUniforms block
 // was moved to another binding.
