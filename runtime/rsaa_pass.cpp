@@ -265,6 +265,23 @@ void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSet
                                 (reversed ? " (reverse Z needs \"reverse-z\")" : ""));
 }
 
+// An image size the driver can hold in a texture and draw into whole, else std::invalid_argument
+// naming `who` and the limit (it was a GL error from inside; a minimised window's 0 x 0 is one).
+void require_image_size(const char* who, int width, int height) {
+  GLint texture = 0, framebuffer[2] = {}, viewport[2] = {};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &framebuffer[0]);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &framebuffer[1]);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  const int max_width = std::min({texture, framebuffer[0], viewport[0]});
+  const int max_height = std::min({texture, framebuffer[1], viewport[1]});
+  if (width < 1 || height < 1 || width > max_width || height > max_height)
+    throw std::invalid_argument(std::string(who) + ": a " + std::to_string(width) + "x" + std::to_string(height) +
+                                " image; this driver takes 1x1 to " + std::to_string(max_width) + "x" +
+                                std::to_string(max_height) +
+                                " (GL_MAX_TEXTURE_SIZE, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT, GL_MAX_VIEWPORT_DIMS)");
+}
+
 // The outside pixel of each subsample, converted to window space (+y up).
 glm::ivec2 window_step(Vec2 sample) {
   const PixelStep s = outside_pixel_towards(sample);
@@ -277,6 +294,7 @@ glm::ivec2 window_step(Vec2 sample) {
 RsaaTargets::RsaaTargets(int width, int height, bool material_edges)
     : width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   gl::check_none_pending("RsaaTargets::RsaaTargets");
+  require_image_size("RsaaTargets", width, height);
   gl_->colour = gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR);
   gl_->normal = gl::make_texture_2d(GL_RG16UI, width, height);
   gl_->primitive = gl::make_texture_2d(material_edges ? GL_RG32UI : GL_R32UI, width, height);
@@ -397,6 +415,7 @@ std::string rsaa_shader_file(const std::string& name) { return gl::shader_source
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     : settings_(settings), width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   gl::check_none_pending("RsaaPass::RsaaPass");
+  require_image_size("RsaaPass", width, height);
   if (settings.auth < 0 || settings.auth > 2)
     throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
   if (!(settings.threshold >= 0.0f)) throw std::invalid_argument("RSAA threshold must be >= 0");

@@ -250,7 +250,8 @@ class RsaaPass {
  public:
   using DrawGeometry = std::function<void(GlName program, glm::vec2 jitter_ndc)>;
 
-  // Needs a current GL 4.5 context. Throws std::invalid_argument for bad settings and
+  // Needs a current GL 4.5 context. Throws std::invalid_argument for bad settings or a size the
+  // driver cannot hold (below 1 or above its texture, framebuffer or viewport limit) and
   // std::runtime_error when the baked table does not match the pattern's positions.
   RsaaPass(const RsaaSettings& settings, int width, int height);
   ~RsaaPass();

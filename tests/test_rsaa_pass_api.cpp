@@ -228,6 +228,25 @@ TEST_F(RsaaPassApi, AProgramDeletedWhileCurrentIsNotRestored) {
   EXPECT_EQ(current, 0);
 }
 
+// An image size outside the driver's limits (a minimised window's 0 x 0 among them) is refused
+// naming the size and the limit; it was a GL error from inside ("GL error 0x0501 in
+// make_texture_2d").
+TEST_F(RsaaPassApi, ImageSizesOutsideTheDriversLimitsAreRefused) {
+  GLint max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const struct {
+    int width, height;
+  } sizes[] = {{0, 0}, {-1, 5}, {5, -1}, {max_texture + 1, 1}, {1, max_texture + 1}};
+  for (const auto& size : sizes) {
+    const std::string named = std::to_string(size.width) + "x" + std::to_string(size.height) + " image";
+    EXPECT_NE(invalid_argument_of([&] { RsaaPass(RsaaSettings{}, size.width, size.height); }).find("RsaaPass: a " + named),
+              std::string::npos);
+    EXPECT_NE(invalid_argument_of([&] { RsaaTargets(size.width, size.height); }).find("RsaaTargets: a " + named),
+              std::string::npos);
+  }
+  gl::check("after the refused sizes");
+}
+
 TEST_F(RsaaPassApi, ResourceSlotsOutsideTheDriversLimitsAreRefused) {
   RsaaSettings settings;
   settings.prepass_first_unit = 1000;
