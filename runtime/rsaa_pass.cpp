@@ -98,6 +98,10 @@ constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, 
 constexpr int kPostUnits = 9;
 // The compute post-process's shader storage binding (the edge list) and image units (output, mask).
 constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
+// The edge list's head (rsaa_post_list.glsl: three group counts and the pixel count), and the
+// location of rsaa_post_classify.comp's rows.
+constexpr GLint64 kListHeadBytes = 16;
+constexpr GLint kClassifyRowsLocation = 0;
 static_assert(kFirstCodeUnit + (kMaxTableSamples + 3) / 4 <= kPrimitiveUnit, "code units overlap the primitive's");
 
 // The table the pass uses: the settings' own, or the built-in one of the pattern named.
@@ -511,15 +515,10 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
   }
   if (settings.post == "compute") {
-    // The list packs a pixel's x and y into 16 bits each, and holds up to every pixel.
-    GLint64 max_block = 0;
-    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    const GLint64 list_bytes = 4 * (4 + GLint64(width) * GLint64(height));
-    if (width > 65536 || height > 65536 || list_bytes > max_block)
-      throw std::invalid_argument("RSAA post compute: the edge list of a " + std::to_string(width) + "x" +
-                                  std::to_string(height) + " image (" + std::to_string(list_bytes) +
-                                  " bytes) is larger than this driver's shader storage block (" +
-                                  std::to_string(max_block) + " bytes) or 65536 x 65536 pixels; use post edges");
+    // The list packs a pixel's x and y into 16 bits each.
+    if (width > 65536 || height > 65536)
+      throw std::invalid_argument("RSAA post compute: the edge list packs pixel coordinates into 16 bits; a " +
+                                  std::to_string(width) + "x" + std::to_string(height) + " image needs post edges");
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
                                      "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
     gl_->classify_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
@@ -530,10 +529,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                             post_defines, "RSAA post-process in place");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
                                                  post_defines, "RSAA post-process resolve of the edge list");
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    gl_->edge_list = gl::Buffer(buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(list_bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    // Every pixel of the image, or as many rows as the driver's storage block holds (8192 x 4096
+    // on llvmpipe's 128 MiB was refused: resolve_edge_list() then lists and resolves in rounds).
+    GLint64 max_block = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
   }
   gl::check("creating the RSAA pass");
 }
@@ -756,7 +756,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     // Every pixel's colour as it is (and the all-similar mask): the resolve pass overwrites the
     // edge pixels. An image copy, and an edge pass that writes depth only: on llvmpipe an edge
     // pass that also fetched and wrote every colour cost more (README, *Cheaper post-processes*).
-    copy_colour(frame, output);
+    copy_colour(frame.colour, output);
     if (settings_.output_mask) clear_to_all_similar(mask_output);
     // Edge pass: depth 1 everywhere, then the full-screen triangle's depth (0.5, or 0 under
     // glClipControl GL_ZERO_TO_ONE) where the mask is not all-similar (the others discard).
@@ -784,14 +784,22 @@ void RsaaPass::clear_to_all_similar(GLuint mask_output) const {
   glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
 }
 
-// The frame's colour into the output as it is, by a framebuffer blit at scale 1 (exact): unlike
-// glCopyImageSubData it takes textures that are not mipmap-complete (a glTexImage2D output with
-// the default minification filter).
-void RsaaPass::copy_colour(const RsaaFrame& frame, GLuint output) {
-  const GLuint source = gl_->copy_source.get({{frame.colour}}, {});
-  const GLuint target = gl_->copy_target.get({{output}}, {});
-  glBlitNamedFramebuffer(source, target, 0, 0, frame.width, frame.height, 0, 0, frame.width, frame.height,
-                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+// One image into another as it is (the frame's colour into the output), by a framebuffer blit at
+// scale 1 (exact): unlike glCopyImageSubData it takes textures that are not mipmap-complete (a
+// glTexImage2D output with the default minification filter).
+void RsaaPass::copy_colour(GLuint from, GLuint to) {
+  const GLuint source = gl_->copy_source.get({{from}}, {});
+  const GLuint target = gl_->copy_target.get({{to}}, {});
+  glBlitNamedFramebuffer(source, target, 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+void RsaaPass::make_edge_list(std::int64_t capacity) {
+  // At least a row: a round lists whole rows.
+  list_capacity_ = std::max<std::int64_t>(capacity, width_);
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  gl_->edge_list = gl::Buffer(buffer);
+  glNamedBufferStorage(buffer, GLsizeiptr(kListHeadBytes + 4 * list_capacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 // The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
@@ -804,36 +812,57 @@ void RsaaPass::copy_colour(const RsaaFrame& frame, GLuint output) {
 // edge pixel; here every lane holds one (README, *Cheaper post-processes*).
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
   const gl::SavedComputeState saved({kEdgeListBinding}, {kOutputImageUnit, kMaskImageUnit});
-  // In place, the image already holds every edge-free pixel's colour: no copy.
+  // The rows listed per round: all of them unless the list cannot hold every pixel (then the
+  // list is filled and resolved again for each band of rows).
+  const int rows = int(std::min<std::int64_t>(height_, list_capacity_ / width_));
+  const bool one_round = rows == height_;
   const bool in_place = output == frame.colour;
-  if (!in_place)
-    copy_colour(frame, output);
   if (in_place && gl_->scratch.get() == 0) gl_->scratch = gl::make_texture_2d(GL_RGBA16F, width_, height_);
-  if (settings_.output_mask) clear_to_all_similar(mask_output);
-  // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
-  const GLuint empty_list[4] = {0, 1, 1, 0};
-  glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
-  glUseProgram(gl_->classify_program.get());
-  glDispatchCompute(GLuint(frame.width + 7) / 8, GLuint(frame.height + 7) / 8, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(gl_->list_size_program.get());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  // In place in one round, the image already holds every edge-free pixel's colour: no copy; the
+  // listed pixels are resolved into the scratch image, then copied over. In several rounds a
+  // round's copy would overwrite 1x colours the next round's resolve reads: the image is resolved
+  // into the scratch image as into a separate output, then copied back whole.
+  const bool scatter = in_place && one_round;
   const GLuint resolved = in_place ? gl_->scratch.get() : output;
-  glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  if (settings_.output_mask)
-    glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
-  glUseProgram(gl_->list_resolve_program.get());
+  if (!in_place)
+    copy_colour(frame.colour, output);
+  else if (!one_round)
+    copy_colour(frame.colour, resolved);
+  if (settings_.output_mask) clear_to_all_similar(mask_output);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
-  glDispatchComputeIndirect(0);
-  if (in_place) {
-    // Every listed pixel resolved from the 1x colours before any of them is overwritten.
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(kMaskImageUnit, gl_->scratch.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
-    glUseProgram(gl_->scatter_program.get());
+  for (int first = 0; first < height_; first += rows) {
+    const int end = std::min(first + rows, height_);
+    // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
+    const GLuint empty_list[4] = {0, 1, 1, 0};
+    glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
+    glUseProgram(gl_->classify_program.get());
+    glUniform2i(kClassifyRowsLocation, first, end);
+    glDispatchCompute(GLuint(width_ + 7) / 8, GLuint(end - first + 7) / 8, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(gl_->list_size_program.get());
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    if (settings_.output_mask)
+      glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+    glUseProgram(gl_->list_resolve_program.get());
     glDispatchComputeIndirect(0);
+    if (scatter) {
+      // Every listed pixel resolved from the 1x colours before any of them is overwritten.
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(kMaskImageUnit, gl_->scratch.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+      glUseProgram(gl_->scatter_program.get());
+      glDispatchComputeIndirect(0);
+    }
+    // The next round rewrites the list this one read (and its head, by a buffer update).
+    if (end < height_)
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  }
+  if (in_place && !one_round) {
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);  // the blit reads what the resolve stored
+    copy_colour(resolved, output);
   }
   // The engine reads the output next, by any path (texture, framebuffer, copy, image).
   glMemoryBarrier(GL_ALL_BARRIER_BITS);

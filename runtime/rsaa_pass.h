@@ -92,6 +92,7 @@
 // Textures and programs they create belong to the RsaaPass object.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -284,7 +285,10 @@ class RsaaPass {
   struct Objects;  // GL objects, defined in rsaa_pass.cpp
   void write_frame_uniforms(const RsaaFrame& frame) const;
   void resolve_edge_list(const RsaaFrame& frame, GlName output, GlName mask_output);
-  void copy_colour(const RsaaFrame& frame, GlName output);
+  void copy_colour(GlName from, GlName to);
+  // The compute post-process's edge list, for `capacity` pixels (at least a row).
+  void make_edge_list(std::int64_t capacity);
+  friend struct RsaaPassTesting;  // tests/test_rsaa_pass_api.cpp: an edge list smaller than the image
   void clear_to_all_similar(GlName mask_output) const;
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
@@ -295,6 +299,7 @@ class RsaaPass {
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
+  std::int64_t list_capacity_ = 0;  // pixels the edge list holds (compute post-process)
   int width_, height_;
   std::unique_ptr<Objects> gl_;
 };

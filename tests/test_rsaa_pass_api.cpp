@@ -1110,7 +1110,70 @@ TEST_F(RsaaPassApi, ZeroToOneAndReverseZDepthGiveTheDefaultMasks) {
 }  // namespace rsaa
 
 namespace rsaa {
+
+// The pass's internals a test reaches (RsaaPass's friend).
+struct RsaaPassTesting {
+  static void set_edge_list_capacity(RsaaPass& pass, std::int64_t pixels) { pass.make_edge_list(pixels); }
+};
+
 namespace {
+
+// An image whose edge list (every pixel) exceeds the driver's shader storage block is resolved in
+// rounds of rows, each listed and resolved in turn: the same image and masks as one round, in
+// place or not. A 8192 x 4096 pass was refused on llvmpipe (128 MiB blocks) although the renderer
+// takes 8192 pixels per side; the rounds are run here with a small list at a small size.
+TEST_F(RsaaPassApi, AnEdgeListSmallerThanTheImageResolvesItInRounds) {
+  GLint64 max_block = 0;
+  GLint max_texture = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const int wide = std::min(max_texture, 8192), tall = int(std::min<GLint64>(max_texture, max_block / 4 / wide));
+  EXPECT_NO_THROW(RsaaPass(RsaaSettings{}, wide, tall)) << wide << "x" << tall;
+
+  constexpr int width = 163, height = 117;
+  const test::SceneFrame scene("builtin:fence", width, height);
+  RsaaSettings single;
+  single.post = "single", single.output_mask = true;
+  RsaaPass reference(single, width, height);
+  scene.render_subsamples(reference);
+  const gl::Texture reference_output = gl::make_texture_2d(GL_RGBA16F, width, height);
+  const gl::Texture reference_mask = gl::make_texture_2d(GL_R32UI, width, height);
+  reference.resolve(scene.frame(), reference_output.get(), reference_mask.get());
+  const Image expected = read_back_image(reference_output.get(), width, height);
+  const std::vector<std::uint32_t> expected_masks = read_back_uints(reference_mask.get(), width, height);
+  const Image one_x = read_back_image(scene.frame().colour, width, height);
+  int resampled = 0;
+  for (std::size_t p = 0; p < one_x.pixels.size(); ++p) resampled += expected.pixels[p].r != one_x.pixels[p].r;
+  EXPECT_GT(resampled, 100);
+
+  RsaaSettings settings;
+  settings.output_mask = true;
+  // Rounds of one row, of seven rows and a last short one, of all but one row; a list smaller
+  // than a row holds a row.
+  for (const std::int64_t capacity : {std::int64_t(width), std::int64_t(width) * 7 + 3,
+                                      std::int64_t(width) * (height - 1), std::int64_t(1)}) {
+    for (const bool in_place : {false, true}) {
+      SCOPED_TRACE("capacity " + std::to_string(capacity) + (in_place ? ", in place" : ""));
+      test::SceneFrame frame_scene("builtin:fence", width, height);
+      RsaaPass pass(settings, width, height);
+      RsaaPassTesting::set_edge_list_capacity(pass, capacity);
+      frame_scene.render_subsamples(pass);
+      const gl::Texture separate = gl::make_texture_2d(GL_RGBA16F, width, height);
+      const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+      const GLuint output = in_place ? frame_scene.frame().colour : separate.get();
+      pass.resolve(frame_scene.frame(), output, mask.get());
+      const Image image = read_back_image(output, width, height);
+      int differing = 0;
+      for (std::size_t p = 0; p < image.pixels.size(); ++p) {
+        const Rgb a = expected.pixels[p], b = image.pixels[p];
+        differing += a.r != b.r || a.g != b.g || a.b != b.b;
+      }
+      EXPECT_EQ(differing, 0);
+      EXPECT_EQ(read_back_uints(mask.get(), width, height), expected_masks);
+    }
+  }
+  gl::check("edge list rounds");
+}
 
 // A context whose driver gives a deleted object's name to the next object made, as most drivers
 // do (Mesa does so only with its force_gl_names_reuse option, read when the context is made).
