@@ -568,6 +568,8 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
   gl::check_none_pending("RsaaPass::render_subsamples");
   validate_frame(frame, width_, height_, settings_);
   codes_ready_ = false;  // until every draw is done (a callback may throw)
+  prepass_frame_[0] = frame.centre_normal, prepass_frame_[1] = frame.centre_primitive;
+  prepass_frame_[2] = frame.centre_depth;
   const int first = settings_.prepass_first_unit;
   const gl::SavedState saved({first, first + 1, first + 2}, {settings_.uniform_binding});
   gl::set_pass_state(true);  // before the clears: they obey the engine's scissor and masks
@@ -722,6 +724,12 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   if (!codes_ready_)
     throw std::logic_error("RsaaPass::resolve before render_subsamples (or after one that did not finish): "
                            "the pass has no similarity codes for this frame");
+  // Two views pre-passed, then resolved, get the second's codes for both.
+  if (prepass_frame_[0] != frame.centre_normal || prepass_frame_[1] != frame.centre_primitive ||
+      prepass_frame_[2] != frame.centre_depth)
+    throw std::logic_error("RsaaPass::resolve: the frame's centre_normal, centre_primitive or centre_depth is not the "
+                           "last render_subsamples' frame's: the codes are another frame's (resolve each frame after "
+                           "its own pre-pass)");
   std::vector<int> units;
   for (int unit = 0; unit < kPostUnits; ++unit) units.push_back(unit);
   const gl::SavedState saved(units, {settings_.uniform_binding});

@@ -267,7 +267,8 @@ class RsaaPass {
   std::string prepass_glsl() const;
   // Writes the anti-aliased colour into `output` (RGBA16F, the frame's size), and the mask into
   // `mask_output` (R32UI) when settings.output_mask. Throws std::logic_error before any pre-pass
-  // (or after one that did not finish): there are no codes to resolve with.
+  // (or after one that did not finish), or for a frame whose normal, primitive or depth texture
+  // is not the last pre-pass's: there are no codes to resolve it with.
   void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
 
   const SamplePattern& pattern() const { return pattern_; }
@@ -299,6 +300,7 @@ class RsaaPass {
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
+  GlName prepass_frame_[3] = {};  // its frame's centre_normal, centre_primitive, centre_depth
   std::int64_t list_capacity_ = 0;  // pixels the edge list holds (compute post-process)
   int width_, height_;
   std::unique_ptr<Objects> gl_;

@@ -728,7 +728,8 @@ TEST_F(RsaaPassApi, AGlErrorTheEngineLeftIsReportedAsItsOwn) {
 }
 
 // resolve() with no codes (no pre-pass yet, or one whose callback threw) is an error: the code
-// textures were undefined (zeros on llvmpipe: a third of the default scene's pixels resampled).
+// textures were undefined (zeros on llvmpipe: a third of the default scene's pixels resampled);
+// so is a frame whose G-buffer is not the last pre-pass's (its codes are another view's).
 TEST_F(RsaaPassApi, ResolvingWithoutAFinishedPrePassIsAnError) {
   const test::SceneFrame scene("builtin:default", kWidth, kHeight);
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
@@ -747,6 +748,11 @@ TEST_F(RsaaPassApi, ResolvingWithoutAFinishedPrePassIsAnError) {
   EXPECT_THROW(pass.render_subsamples(scene.frame(), [](GLuint, glm::vec2) { throw std::runtime_error("engine"); }),
                std::runtime_error);
   EXPECT_NE(logic_error_of().find("did not finish"), std::string::npos);
+  // Two views pre-passed one after the other, then resolved: the first's codes are gone.
+  const test::SceneFrame other_view("builtin:edges", kWidth, kHeight);
+  scene.render_subsamples(pass);
+  other_view.render_subsamples(pass);
+  EXPECT_NE(logic_error_of().find("the codes are another frame's"), std::string::npos);
   gl::check("resolving without codes");
 }
 
