@@ -223,7 +223,15 @@ void restore_indexed_buffer(const IndexedBufferBinding& b) {
 SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_bindings) {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
-  glGetIntegerv(GL_VIEWPORT, viewport_);
+  GLint viewports = 1;
+  glGetIntegerv(GL_MAX_VIEWPORTS, &viewports);
+  viewports_.resize(4 * std::size_t(viewports));
+  depth_ranges_.resize(2 * std::size_t(viewports));
+  for (GLuint i = 0; i < GLuint(viewports); ++i) {
+    glGetFloati_v(GL_VIEWPORT, i, &viewports_[4 * i]);
+    glGetDoublei_v(GL_DEPTH_RANGE, i, &depth_ranges_[2 * i]);
+    scissor_tests_.push_back(glIsEnabledi(GL_SCISSOR_TEST, i));
+  }
   glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
   // A program deleted while current lives only until another is made current: the pass's draws
   // end it, so there is nothing to restore (glUseProgram would fail with GL_INVALID_VALUE).
@@ -233,7 +241,6 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   depth_test_ = glIsEnabled(GL_DEPTH_TEST);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
-  glGetDoublev(GL_DEPTH_RANGE, depth_range_);
   polygon_offset_fill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
   stencil_test_ = glIsEnabled(GL_STENCIL_TEST);
   const GLenum stencil_queries[2][7] = {
@@ -243,7 +250,6 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
        GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS, GL_STENCIL_BACK_WRITEMASK}};
   for (int face = 0; face < 2; ++face)
     for (int i = 0; i < 7; ++i) glGetIntegerv(stencil_queries[face][i], &stencil_[face][i]);
-  scissor_ = glIsEnabled(GL_SCISSOR_TEST);
   sample_shading_ = glIsEnabled(GL_SAMPLE_SHADING);
   cull_face_ = glIsEnabled(GL_CULL_FACE);
   rasterizer_discard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
@@ -299,12 +305,13 @@ SavedState::~SavedState() {
   for (std::size_t i = 0; i < std::size(kSampleCaps); ++i)
     sample_caps_[i] ? glEnable(kSampleCaps[i]) : glDisable(kSampleCaps[i]);
   glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_));
-  scissor_ ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
+  for (GLuint i = 0; i < GLuint(scissor_tests_.size()); ++i)
+    scissor_tests_[i] ? glEnablei(GL_SCISSOR_TEST, i) : glDisablei(GL_SCISSOR_TEST, i);
   sample_shading_ ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);
   glMinSampleShading(min_sample_shading_);
   glDepthFunc(GLenum(depth_func_));
   glDepthMask(depth_mask_);
-  glDepthRange(depth_range_[0], depth_range_[1]);
+  glDepthRangeArrayv(0, GLsizei(depth_ranges_.size() / 2), depth_ranges_.data());
   polygon_offset_fill_ ? glEnable(GL_POLYGON_OFFSET_FILL) : glDisable(GL_POLYGON_OFFSET_FILL);
   depth_test_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
   for (int face = 0; face < 2; ++face) {
@@ -316,7 +323,7 @@ SavedState::~SavedState() {
   }
   stencil_test_ ? glEnable(GL_STENCIL_TEST) : glDisable(GL_STENCIL_TEST);
   glUseProgram(GLuint(program_));
-  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  glViewportArrayv(0, GLsizei(viewports_.size() / 4), viewports_.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read_framebuffer_));
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw_framebuffer_));
 }

@@ -112,8 +112,8 @@ IndexedBufferBinding save_indexed_buffer(GLenum target, int binding);
 void restore_indexed_buffer(const IndexedBufferBinding& b);
 
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
-// bindings, viewport, current program, depth test/function/mask/range, polygon offset, blending and colour mask of
-// every draw buffer, scissor test, face culling, polygon mode, rasterizer discard, sample
+// bindings, viewports, current program, depth test/function/mask/ranges, polygon offset, blending and colour mask of
+// every draw buffer, scissor tests (every viewport index's), face culling, polygon mode, rasterizer discard, sample
 // shading, the vertex array, textures and sampler objects, uniform buffers (below, and the generic
 // GL_UNIFORM_BUFFER binding, which binding an indexed one also sets). So that a pass dropped into
 // an engine leaves the engine's state as it found it.
@@ -135,13 +135,17 @@ class SavedState {
     GLboolean blend;
     GLboolean colour_mask[4];
   };
-  GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, viewport_[4] = {}, program_ = 0;
-  GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, scissor_ = GL_FALSE;
+  GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, program_ = 0;
+  GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE;
+  // Per viewport index (glViewport, glDepthRange and glDisable(GL_SCISSOR_TEST) set every one): its
+  // rectangle (floats, as glViewportIndexedf takes it), depth range and scissor test.
+  std::vector<GLfloat> viewports_;
+  std::vector<GLdouble> depth_ranges_;
+  std::vector<GLboolean> scissor_tests_;
   GLboolean sample_shading_ = GL_FALSE, cull_face_ = GL_FALSE, rasterizer_discard_ = GL_FALSE;
   // GL_MULTISAMPLE, the sample mask and coverage operations and the colour logic op (kSampleCaps).
   GLboolean sample_caps_[6] = {};
   GLint polygon_mode_ = GL_FILL;
-  GLdouble depth_range_[2] = {0.0, 1.0};
   GLboolean polygon_offset_fill_ = GL_FALSE;
   GLfloat min_sample_shading_ = 0.0f;
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;

@@ -78,9 +78,9 @@
 // on, sample mask, coverage value and alpha to coverage off, and stencil test off, or,
 // with prepass_cull "neighbours", on (GL_EQUAL 1, no stencil writes).
 //
-// GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
-// program, depth test/function/mask, stencil test/functions/operations/masks, blending and
-// colour masks of every draw buffer, scissor test, culling, polygon mode, rasterizer discard,
+// GL STATE. Every call restores what it changes: framebuffer bindings, the viewports, depth
+// ranges and scissor tests of every viewport index, current program, depth test/function/mask,
+// stencil test/functions/operations/masks, blending and colour masks of every draw buffer, culling, polygon mode, rasterizer discard,
 // sample shading, GL_MULTISAMPLE, sample mask and coverage, alpha to coverage/one, logic op, the
 // generic uniform buffer binding, the vertex array, the textures and sampler objects bound to units 0-8 and to
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the

@@ -339,6 +339,11 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   }();
   glBindImageTexture(1, engine_array.get(), 1, GL_FALSE, 2, GL_WRITE_ONLY, GL_RGBA8);  // level 1, layer 2
 
+  // Another viewport index's rectangle, depth range and scissor test (for gl_ViewportIndex draws):
+  // glViewport, glDepthRange and glDisable(GL_SCISSOR_TEST) set every index.
+  glViewportIndexedf(1, 5.5f, 6.0f, 7.0f, 8.0f);
+  glDepthRangeIndexed(1, 0.25, 0.75);
+  glDisablei(GL_SCISSOR_TEST, 1);  // on for index 0 (above)
   RsaaSettings settings;
   settings.prepass_cull = "neighbours";  // the pass's stencil state too
   RsaaPass pass(settings, kWidth, kHeight);
@@ -360,6 +365,15 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(GLuint(framebuffer), engine_framebuffer.get());
   EXPECT_EQ(viewport[0], 1);
   EXPECT_EQ(viewport[3], 4);
+  GLfloat viewport1[4] = {};
+  GLdouble depth_range1[2] = {};
+  glGetFloati_v(GL_VIEWPORT, 1, viewport1);
+  glGetDoublei_v(GL_DEPTH_RANGE, 1, depth_range1);
+  EXPECT_EQ(viewport1[0], 5.5f);
+  EXPECT_EQ(viewport1[3], 8.0f);
+  EXPECT_EQ(depth_range1[0], 0.25);
+  EXPECT_EQ(depth_range1[1], 0.75);
+  EXPECT_FALSE(glIsEnabledi(GL_SCISSOR_TEST, 1));
   EXPECT_EQ(GLuint(program), renderer.shade_program());
   EXPECT_TRUE(glIsEnabled(GL_BLEND));
   EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST));
