@@ -26,6 +26,15 @@ void check(const char* where) {
   throw GlError(std::string("GL error ") + hex(first) + " in " + where);
 }
 
+void check_none_pending(const char* call) {
+  GLenum first = glGetError();
+  if (first == GL_NO_ERROR) return;
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  throw GlError(std::string("GL error ") + hex(first) + " was already set when " + call +
+                " was called: an earlier GL call of the caller's failed (" + call + " did nothing)");
+}
+
 void require_gl45() {
   if (epoxy_gl_version() < 45)
     throw GlError("OpenGL 4.5 core is required; the context offers " +

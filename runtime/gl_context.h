@@ -15,6 +15,11 @@ class GlError : public std::runtime_error {
 
 // Throws GlError naming `where` if the GL error flag is set (and drains it).
 void check(const char* where);
+// At the start of a call into the library: throws GlError if the GL error flag is already set
+// (and drains it), naming `call` and saying the error came from an earlier GL call of the
+// caller's. Without it a library call reported the engine's stray error as its own, from
+// wherever it next checked, after changing part of what it was to do.
+void check_none_pending(const char* call);
 
 // Throws GlError when the current context is older than 4.5 core.
 void require_gl45();

@@ -1,6 +1,7 @@
 #include "runtime/gl_objects.h"
 
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 
 #include "runtime/gl_context.h"
@@ -13,6 +14,7 @@ void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
 void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 void delete_program(GLuint id) { glDeleteProgram(id); }
 void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+void delete_sampler(GLuint id) { glDeleteSamplers(1, &id); }
 
 Texture make_texture_2d(GLenum internal_format, int width, int height, GLenum filter) {
   GLuint id = 0;
@@ -44,30 +46,73 @@ Texture make_texture_2d_multisample(GLenum internal_format, int width, int heigh
   return Texture(id);
 }
 
-Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth) {
+void upload_texels_2d(GLuint texture, int width, int height, GLenum format, GLenum type, const void* data) {
+  // The unpack parameters and their defaults (GL 4.5 table 8.1).
+  const struct {
+    GLenum name;
+    GLint initial;
+  } parameters[] = {{GL_UNPACK_SWAP_BYTES, GL_FALSE}, {GL_UNPACK_LSB_FIRST, GL_FALSE}, {GL_UNPACK_ROW_LENGTH, 0},
+                    {GL_UNPACK_IMAGE_HEIGHT, 0},     {GL_UNPACK_SKIP_ROWS, 0},       {GL_UNPACK_SKIP_PIXELS, 0},
+                    {GL_UNPACK_SKIP_IMAGES, 0},      {GL_UNPACK_ALIGNMENT, 4}};
+  GLint saved[std::size(parameters)] = {}, unpack_buffer = 0;
+  glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  for (std::size_t i = 0; i < std::size(parameters); ++i) {
+    glGetIntegerv(parameters[i].name, &saved[i]);
+    glPixelStorei(parameters[i].name, parameters[i].initial);
+  }
+  glTextureSubImage2D(texture, 0, 0, 0, width, height, format, type, data);
+  for (std::size_t i = 0; i < std::size(parameters); ++i) glPixelStorei(parameters[i].name, saved[i]);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpack_buffer));
+}
+
+Sampler make_sampler(GLenum filter) {
   GLuint id = 0;
-  glCreateFramebuffers(1, &id);
-  Framebuffer fb(id);
-  std::vector<GLenum> buffers;
+  glCreateSamplers(1, &id);
+  glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(id, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  check("make_sampler");
+  return Sampler(id);
+}
+
+namespace {
+
+// Attaches `colour` (in order) and `depth` to framebuffer `id`.
+void attach_all(GLuint id, const std::vector<Attachment>& colour, Attachment depth) {
   const auto attach = [&](GLenum point, const Attachment& a) {
     if (a.layer >= 0)
       glNamedFramebufferTextureLayer(id, point, a.texture, 0, a.layer);
     else
       glNamedFramebufferTexture(id, point, a.texture, 0);
   };
-  for (std::size_t i = 0; i < colour.size(); ++i) {
-    attach(GLenum(GL_COLOR_ATTACHMENT0 + i), colour[i]);
-    buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
-  }
+  for (std::size_t i = 0; i < colour.size(); ++i) attach(GLenum(GL_COLOR_ATTACHMENT0 + i), colour[i]);
   if (depth.texture) {
     GLint stencil_bits = 0;  // a depth-stencil texture attaches both
     glGetTextureLevelParameteriv(depth.texture, 0, GL_TEXTURE_STENCIL_SIZE, &stencil_bits);
     attach(stencil_bits > 0 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, depth);
   }
-  glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+}
+
+void require_complete(GLuint id) {
   const GLenum status = glCheckNamedFramebufferStatus(id, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw GlError("framebuffer incomplete (status " + std::to_string(status) + ")");
+}
+
+}  // namespace
+
+Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth) {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  Framebuffer fb(id);
+  attach_all(id, colour, depth);
+  std::vector<GLenum> buffers;
+  for (std::size_t i = 0; i < colour.size(); ++i) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+  glNamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+  require_complete(id);
   check("make_framebuffer");
   return fb;
 }
@@ -79,7 +124,15 @@ GLuint CachedFramebuffer::get(const std::vector<Attachment>& colour, Attachment 
   if (key != key_ || !framebuffer_.get()) {
     framebuffer_ = make_framebuffer(colour, depth);
     key_ = key;
+    return framebuffer_.get();
   }
+  // The same names, attached again: a texture deleted while this framebuffer was not bound stays
+  // attached to it, and a driver that reuses names (most do; Mesa with force_gl_names_reuse) gives
+  // its name to the next texture made, which this framebuffer would then never reach (the pass
+  // wrote into the deleted texture and left the engine's new output untouched). Attaching the
+  // object already attached changes nothing.
+  attach_all(framebuffer_.get(), colour, depth);
+  require_complete(framebuffer_.get());
   return framebuffer_.get();
 }
 
@@ -140,6 +193,16 @@ Program make_program(const std::vector<ShaderStage>& stages, const std::string& 
 
 namespace rsaa::gl {
 
+namespace {
+
+// What decides which samples a fragment writes and how a written value combines (an engine may
+// turn them on for its own draws; the multisample pre-pass's codes and any integer code depend on
+// them): set_pass_state() turns GL_MULTISAMPLE on and the others off, SavedState restores them.
+constexpr GLenum kSampleCaps[] = {GL_MULTISAMPLE, GL_SAMPLE_MASK, GL_SAMPLE_COVERAGE, GL_SAMPLE_ALPHA_TO_COVERAGE,
+                                  GL_SAMPLE_ALPHA_TO_ONE, GL_COLOR_LOGIC_OP};
+
+}  // namespace
+
 IndexedBufferBinding save_indexed_buffer(GLenum target, int binding) {
   const bool uniform = target == GL_UNIFORM_BUFFER;
   IndexedBufferBinding b{target, binding, 0, 0, 0};
@@ -160,7 +223,15 @@ void restore_indexed_buffer(const IndexedBufferBinding& b) {
 SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_bindings) {
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_framebuffer_);
   glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_framebuffer_);
-  glGetIntegerv(GL_VIEWPORT, viewport_);
+  GLint viewports = 1;
+  glGetIntegerv(GL_MAX_VIEWPORTS, &viewports);
+  viewports_.resize(4 * std::size_t(viewports));
+  depth_ranges_.resize(2 * std::size_t(viewports));
+  for (GLuint i = 0; i < GLuint(viewports); ++i) {
+    glGetFloati_v(GL_VIEWPORT, i, &viewports_[4 * i]);
+    glGetDoublei_v(GL_DEPTH_RANGE, i, &depth_ranges_[2 * i]);
+    scissor_tests_.push_back(glIsEnabledi(GL_SCISSOR_TEST, i));
+  }
   glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
   // A program deleted while current lives only until another is made current: the pass's draws
   // end it, so there is nothing to restore (glUseProgram would fail with GL_INVALID_VALUE).
@@ -170,7 +241,6 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   depth_test_ = glIsEnabled(GL_DEPTH_TEST);
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
-  glGetDoublev(GL_DEPTH_RANGE, depth_range_);
   polygon_offset_fill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
   stencil_test_ = glIsEnabled(GL_STENCIL_TEST);
   const GLenum stencil_queries[2][7] = {
@@ -180,10 +250,11 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
        GL_STENCIL_BACK_PASS_DEPTH_FAIL, GL_STENCIL_BACK_PASS_DEPTH_PASS, GL_STENCIL_BACK_WRITEMASK}};
   for (int face = 0; face < 2; ++face)
     for (int i = 0; i < 7; ++i) glGetIntegerv(stencil_queries[face][i], &stencil_[face][i]);
-  scissor_ = glIsEnabled(GL_SCISSOR_TEST);
   sample_shading_ = glIsEnabled(GL_SAMPLE_SHADING);
   cull_face_ = glIsEnabled(GL_CULL_FACE);
   rasterizer_discard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
+  static_assert(std::size(kSampleCaps) == sizeof(sample_caps_) / sizeof(sample_caps_[0]), "one flag per capability");
+  for (std::size_t i = 0; i < std::size(kSampleCaps); ++i) sample_caps_[i] = glIsEnabled(kSampleCaps[i]);
   glGetIntegerv(GL_POLYGON_MODE, &polygon_mode_);
   GLint draw_buffers = 1;
   glGetIntegerv(GL_MAX_DRAW_BUFFERS, &draw_buffers);
@@ -207,6 +278,7 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   }
   glActiveTexture(GLenum(active_texture_));
   for (int binding : uniform_bindings) uniform_buffers_.push_back(save_indexed_buffer(GL_UNIFORM_BUFFER, binding));
+  glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &generic_uniform_buffer_);
 }
 
 SavedState::~SavedState() {
@@ -219,6 +291,9 @@ SavedState::~SavedState() {
   }
   glActiveTexture(GLenum(active_texture_));
   for (const IndexedBufferBinding& u : uniform_buffers_) restore_indexed_buffer(u);
+  // After the indexed ones, which set it too: an engine's glBufferSubData(GL_UNIFORM_BUFFER, ...)
+  // would otherwise write into the buffer at the pass's binding (or fail with none there).
+  glBindBuffer(GL_UNIFORM_BUFFER, GLuint(generic_uniform_buffer_));
   glBindVertexArray(GLuint(vertex_array_));
   for (GLuint i = 0; i < GLuint(draw_buffers_.size()); ++i) {
     const DrawBufferState& d = draw_buffers_[i];
@@ -227,13 +302,16 @@ SavedState::~SavedState() {
   }
   cull_face_ ? glEnable(GL_CULL_FACE) : glDisable(GL_CULL_FACE);
   rasterizer_discard_ ? glEnable(GL_RASTERIZER_DISCARD) : glDisable(GL_RASTERIZER_DISCARD);
+  for (std::size_t i = 0; i < std::size(kSampleCaps); ++i)
+    sample_caps_[i] ? glEnable(kSampleCaps[i]) : glDisable(kSampleCaps[i]);
   glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_));
-  scissor_ ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
+  for (GLuint i = 0; i < GLuint(scissor_tests_.size()); ++i)
+    scissor_tests_[i] ? glEnablei(GL_SCISSOR_TEST, i) : glDisablei(GL_SCISSOR_TEST, i);
   sample_shading_ ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);
   glMinSampleShading(min_sample_shading_);
   glDepthFunc(GLenum(depth_func_));
   glDepthMask(depth_mask_);
-  glDepthRange(depth_range_[0], depth_range_[1]);
+  glDepthRangeArrayv(0, GLsizei(depth_ranges_.size() / 2), depth_ranges_.data());
   polygon_offset_fill_ ? glEnable(GL_POLYGON_OFFSET_FILL) : glDisable(GL_POLYGON_OFFSET_FILL);
   depth_test_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
   for (int face = 0; face < 2; ++face) {
@@ -245,7 +323,7 @@ SavedState::~SavedState() {
   }
   stencil_test_ ? glEnable(GL_STENCIL_TEST) : glDisable(GL_STENCIL_TEST);
   glUseProgram(GLuint(program_));
-  glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+  glViewportArrayv(0, GLsizei(viewports_.size() / 4), viewports_.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read_framebuffer_));
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw_framebuffer_));
 }
@@ -288,6 +366,7 @@ void set_pass_state(bool depth_test) {
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_STENCIL_TEST);
   glStencilMask(0xFFFFFFFFu);
+  for (GLenum cap : kSampleCaps) cap == GL_MULTISAMPLE ? glEnable(cap) : glDisable(cap);
   depth_test ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
 }
 

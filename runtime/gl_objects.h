@@ -41,6 +41,7 @@ void delete_buffer(GLuint id);
 void delete_vertex_array(GLuint id);
 void delete_program(GLuint id);
 void delete_query(GLuint id);
+void delete_sampler(GLuint id);
 
 using Texture = Handle<delete_texture>;
 using Framebuffer = Handle<delete_framebuffer>;
@@ -48,11 +49,21 @@ using Buffer = Handle<delete_buffer>;
 using VertexArray = Handle<delete_vertex_array>;
 using Program = Handle<delete_program>;
 using Query = Handle<delete_query>;
+using Sampler = Handle<delete_sampler>;
 
 // An immutable 2D (or 2D-array when layers > 0, or multisample when samples > 0) texture.
 Texture make_texture_2d(GLenum internal_format, int width, int height, GLenum filter = GL_NEAREST);
 Texture make_texture_2d_array(GLenum internal_format, int width, int height, int layers);
 Texture make_texture_2d_multisample(GLenum internal_format, int width, int height, int samples);
+// Uploads width x height texels of `data` (client memory, tightly packed) into level 0 of
+// `texture`, whatever pixel unpack state the caller left (a bound GL_PIXEL_UNPACK_BUFFER would
+// turn the pointer into an offset, GL_UNPACK_ROW_LENGTH or SKIP_* would read elsewhere); that
+// state is as it was after.
+void upload_texels_2d(GLuint texture, int width, int height, GLenum format, GLenum type, const void* data);
+// A sampler object with `filter` for minification and magnification (no mipmaps), clamped to
+// the edge, no depth comparison: read through it, a texture's own sampling parameters (and its
+// completeness under them) do not matter.
+Sampler make_sampler(GLenum filter);
 
 // A framebuffer with the given colour attachments (in order) and an optional depth attachment;
 // throws GlError if incomplete. layer >= 0 attaches that layer of an array texture.
@@ -62,8 +73,10 @@ struct Attachment {
 };
 Framebuffer make_framebuffer(const std::vector<Attachment>& colour, Attachment depth = {});
 
-// A framebuffer for caller-provided output textures, made again only when they change: a new
-// framebuffer every frame costs llvmpipe more than the frame itself (it re-specialises shaders).
+// A framebuffer for caller-provided output textures, made again only when their names change: a
+// new framebuffer every frame costs llvmpipe more than the frame itself (it re-specialises
+// shaders). The textures are attached again at every get() (a deleted texture's name may come
+// back as another texture).
 class CachedFramebuffer {
  public:
   GLuint get(const std::vector<Attachment>& colour, Attachment depth = {});
@@ -99,10 +112,11 @@ IndexedBufferBinding save_indexed_buffer(GLenum target, int binding);
 void restore_indexed_buffer(const IndexedBufferBinding& b);
 
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
-// bindings, viewport, current program, depth test/function/mask/range, polygon offset, blending and colour mask of
-// every draw buffer, scissor test, face culling, polygon mode, rasterizer discard, sample
-// shading, the vertex array, textures and sampler objects, uniform buffers (below). So that a
-// pass dropped into an engine leaves the engine's state as it found it.
+// bindings, viewports, current program, depth test/function/mask/ranges, polygon offset, blending and colour mask of
+// every draw buffer, scissor tests (every viewport index's), face culling, polygon mode, rasterizer discard, sample
+// shading, the vertex array, textures and sampler objects, uniform buffers (below, and the generic
+// GL_UNIFORM_BUFFER binding, which binding an indexed one also sets). So that a pass dropped into
+// an engine leaves the engine's state as it found it.
 class SavedState {
  public:
   // Also saves the 2D, 2D-array and 2D-multisample textures bound to `texture_units` and the
@@ -121,11 +135,17 @@ class SavedState {
     GLboolean blend;
     GLboolean colour_mask[4];
   };
-  GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, viewport_[4] = {}, program_ = 0;
-  GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE, scissor_ = GL_FALSE;
+  GLint draw_framebuffer_ = 0, read_framebuffer_ = 0, program_ = 0;
+  GLboolean depth_test_ = GL_FALSE, depth_mask_ = GL_TRUE;
+  // Per viewport index (glViewport, glDepthRange and glDisable(GL_SCISSOR_TEST) set every one): its
+  // rectangle (floats, as glViewportIndexedf takes it), depth range and scissor test.
+  std::vector<GLfloat> viewports_;
+  std::vector<GLdouble> depth_ranges_;
+  std::vector<GLboolean> scissor_tests_;
   GLboolean sample_shading_ = GL_FALSE, cull_face_ = GL_FALSE, rasterizer_discard_ = GL_FALSE;
+  // GL_MULTISAMPLE, the sample mask and coverage operations and the colour logic op (kSampleCaps).
+  GLboolean sample_caps_[6] = {};
   GLint polygon_mode_ = GL_FILL;
-  GLdouble depth_range_[2] = {0.0, 1.0};
   GLboolean polygon_offset_fill_ = GL_FALSE;
   GLfloat min_sample_shading_ = 0.0f;
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;
@@ -137,6 +157,7 @@ class SavedState {
   std::vector<UnitTextures> textures_;
   std::vector<DrawBufferState> draw_buffers_;  // blending and colour mask of every draw buffer
   std::vector<IndexedBufferBinding> uniform_buffers_;
+  GLint generic_uniform_buffer_ = 0;
 };
 
 // Saves and restores what a compute pass changes beside SavedState: the shader storage buffers
@@ -162,7 +183,9 @@ class SavedComputeState {
 
 // The state a pass draws with, whatever the engine left: clears and writes reach every pixel
 // (no scissor, all masks on, no culling, filled polygons, no rasterizer discard, no polygon
-// offset), no blending, no stencil test, depth range [0, 1], depth test on (GL_LESS) or off.
+// offset), no blending, no stencil test, depth range [0, 1], depth test on (GL_LESS) or off;
+// every sample of a multisample target written (GL_MULTISAMPLE on, no sample mask, coverage
+// value or alpha to coverage/one) and the codes written as they are (no logic op).
 void set_pass_state(bool depth_test);
 
 // Throws std::invalid_argument naming `what` unless `texture` is an existing 2D texture of

@@ -37,6 +37,12 @@ struct RsaaPass::Objects {
   gl::Framebuffer multisample_target2;
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
+  // Every texture the pass reads is read through these (the colour bilinear, the others
+  // nearest), not through the texture's own parameters nor an engine's sampler objects: a
+  // texture's default GL_REPEAT wrap blended the opposite image border into edge pixels, and a
+  // texture incomplete under its own filters (glTexImage2D's default mipmap minification, an
+  // integer texture filtered linearly, or an engine's sampler object on a unit) reads as zero.
+  gl::Sampler bilinear, nearest;
   gl::Program subsample_program, post_program;
   // The culled jittered pre-pass: the marking program and its target (every code texture and
   // the subsample depth-stencil).
@@ -92,6 +98,10 @@ constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, 
 constexpr int kPostUnits = 9;
 // The compute post-process's shader storage binding (the edge list) and image units (output, mask).
 constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
+// The edge list's head (rsaa_post_list.glsl: three group counts and the pixel count), and the
+// location of rsaa_post_classify.comp's rows.
+constexpr GLint64 kListHeadBytes = 16;
+constexpr GLint kClassifyRowsLocation = 0;
 static_assert(kFirstCodeUnit + (kMaxTableSamples + 3) / 4 <= kPrimitiveUnit, "code units overlap the primitive's");
 
 // The table the pass uses: the settings' own, or the built-in one of the pattern named.
@@ -138,7 +148,7 @@ gl::Texture table_texture(const OffsetTable& table) {
     t[2] = float(std::max(0, representative_dissimilar(table.pattern, Mask(mask))));
   }
   gl::Texture texture = gl::make_texture_2d(GL_RGBA32F, width, height);
-  glTextureSubImage2D(texture.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+  gl::upload_texels_2d(texture.get(), width, height, GL_RGBA, GL_FLOAT, texels.data());
   return texture;
 }
 
@@ -259,6 +269,23 @@ void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSet
                                 (reversed ? " (reverse Z needs \"reverse-z\")" : ""));
 }
 
+// An image size the driver can hold in a texture and draw into whole, else std::invalid_argument
+// naming `who` and the limit (it was a GL error from inside; a minimised window's 0 x 0 is one).
+void require_image_size(const char* who, int width, int height) {
+  GLint texture = 0, framebuffer[2] = {}, viewport[2] = {};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &framebuffer[0]);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &framebuffer[1]);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  const int max_width = std::min({texture, framebuffer[0], viewport[0]});
+  const int max_height = std::min({texture, framebuffer[1], viewport[1]});
+  if (width < 1 || height < 1 || width > max_width || height > max_height)
+    throw std::invalid_argument(std::string(who) + ": a " + std::to_string(width) + "x" + std::to_string(height) +
+                                " image; this driver takes 1x1 to " + std::to_string(max_width) + "x" +
+                                std::to_string(max_height) +
+                                " (GL_MAX_TEXTURE_SIZE, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT, GL_MAX_VIEWPORT_DIMS)");
+}
+
 // The outside pixel of each subsample, converted to window space (+y up).
 glm::ivec2 window_step(Vec2 sample) {
   const PixelStep s = outside_pixel_towards(sample);
@@ -270,6 +297,8 @@ glm::ivec2 window_step(Vec2 sample) {
 
 RsaaTargets::RsaaTargets(int width, int height, bool material_edges)
     : width_(width), height_(height), gl_(std::make_unique<Objects>()) {
+  gl::check_none_pending("RsaaTargets::RsaaTargets");
+  require_image_size("RsaaTargets", width, height);
   gl_->colour = gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR);
   gl_->normal = gl::make_texture_2d(GL_RG16UI, width, height);
   gl_->primitive = gl::make_texture_2d(material_edges ? GL_RG32UI : GL_R32UI, width, height);
@@ -293,6 +322,10 @@ void RsaaTargets::use_colour(GlName colour) {
 }
 
 void RsaaTargets::clear(const float background[3], float far_depth) const {
+  // Clears obey the scissor test and the colour and depth masks: the engine's (a depth mask left
+  // off after its transparent draws, a scissor left on) left pixels of the last frame.
+  const gl::SavedState saved({});
+  gl::set_pass_state(false);
   const GLfloat colour[4] = {background[0], background[1], background[2], 1.0f};
   const GLuint zero[4] = {0, 0, 0, 0};
   const GLuint framebuffer = gl_->framebuffer.get();
@@ -324,14 +357,18 @@ SamplePattern query_gl_sample_pattern(int samples) {
     throw std::invalid_argument("the GL driver (" + renderer() + ") gives " + std::to_string(actual) + " samples for " +
                                 std::to_string(samples) + ": it has no " + std::to_string(samples) + "-sample pattern");
   const gl::Framebuffer fb = gl::make_framebuffer({{texture.get()}});
-  glBindFramebuffer(GL_FRAMEBUFFER, fb.get());
+  // The positions are the draw framebuffer's: bound meanwhile, the engine's bound again after
+  // (RsaaPass's constructor calls this; it left the engine drawing into the default framebuffer).
+  GLint engine_framebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &engine_framebuffer);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fb.get());
   std::vector<Vec2> positions;
   for (int i = 0; i < samples; ++i) {
     GLfloat p[2];
     glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(i), p);
     positions.push_back({p[0], p[1]});
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(engine_framebuffer));
   gl::check("reading the driver's sample positions");
   return pattern_from_gl_positions("gl" + std::to_string(samples) + "x", positions);
 }
@@ -381,6 +418,8 @@ std::string rsaa_shader_file(const std::string& name) { return gl::shader_source
 
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     : settings_(settings), width_(width), height_(height), gl_(std::make_unique<Objects>()) {
+  gl::check_none_pending("RsaaPass::RsaaPass");
+  require_image_size("RsaaPass", width, height);
   if (settings.auth < 0 || settings.auth > 2)
     throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
   if (!(settings.threshold >= 0.0f)) throw std::invalid_argument("RSAA threshold must be >= 0");
@@ -397,6 +436,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   const OffsetTable table = table_of(settings);
   pattern_ = table.pattern;
   gl_->table = table_texture(table);
+  gl_->bilinear = gl::make_sampler(GL_LINEAR);
+  gl_->nearest = gl::make_sampler(GL_NEAREST);
 
   const int n = pattern_.size();
   if (settings.post != "edges" && settings.post != "single" && settings.post != "compute")
@@ -474,15 +515,10 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
   }
   if (settings.post == "compute") {
-    // The list packs a pixel's x and y into 16 bits each, and holds up to every pixel.
-    GLint64 max_block = 0;
-    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    const GLint64 list_bytes = 4 * (4 + GLint64(width) * GLint64(height));
-    if (width > 65536 || height > 65536 || list_bytes > max_block)
-      throw std::invalid_argument("RSAA post compute: the edge list of a " + std::to_string(width) + "x" +
-                                  std::to_string(height) + " image (" + std::to_string(list_bytes) +
-                                  " bytes) is larger than this driver's shader storage block (" +
-                                  std::to_string(max_block) + " bytes) or 65536 x 65536 pixels; use post edges");
+    // The list packs a pixel's x and y into 16 bits each.
+    if (width > 65536 || height > 65536)
+      throw std::invalid_argument("RSAA post compute: the edge list packs pixel coordinates into 16 bits; a " +
+                                  std::to_string(width) + "x" + std::to_string(height) + " image needs post edges");
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
                                      "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
     gl_->classify_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
@@ -493,10 +529,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                             post_defines, "RSAA post-process in place");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
                                                  post_defines, "RSAA post-process resolve of the edge list");
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    gl_->edge_list = gl::Buffer(buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(list_bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    // Every pixel of the image, or as many rows as the driver's storage block holds (8192 x 4096
+    // on llvmpipe's 128 MiB was refused: resolve_edge_list() then lists and resolves in rounds).
+    GLint64 max_block = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
   }
   gl::check("creating the RSAA pass");
 }
@@ -544,13 +581,19 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
 }
 
 void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw) {
+  gl::check_none_pending("RsaaPass::render_subsamples");
   validate_frame(frame, width_, height_, settings_);
+  codes_ready_ = false;  // until every draw is done (a callback may throw)
+  prepass_frame_[0] = frame.centre_normal, prepass_frame_[1] = frame.centre_primitive;
+  prepass_frame_[2] = frame.centre_depth;
   const int first = settings_.prepass_first_unit;
   const gl::SavedState saved({first, first + 1, first + 2}, {settings_.uniform_binding});
   gl::set_pass_state(true);  // before the clears: they obey the engine's scissor and masks
   write_frame_uniforms(frame);
   const GLuint textures[3] = {frame.centre_normal, frame.centre_primitive, frame.centre_depth};
   glBindTextures(GLuint(first), 3, textures);
+  const GLuint samplers[3] = {gl_->nearest.get(), gl_->nearest.get(), gl_->nearest.get()};
+  glBindSamplers(GLuint(first), 3, samplers);
   const GLuint zero[4] = {0, 0, 0, 0};
   const bool reverse_z = settings_.depth == "reverse-z";
   const GLfloat far_depth = reverse_z ? 0.0f : 1.0f;
@@ -582,6 +625,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       draw(-1, jitter);
     }
     gl::check("RSAA pre-pass (multisample)");
+    codes_ready_ = true;
     return;
   }
   if (cull_) {
@@ -623,6 +667,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     draw(i, jitter);
   }
   gl::check("RSAA pre-pass");
+  codes_ready_ = true;
 }
 
 void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
@@ -671,11 +716,18 @@ void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const 
       if (GLuint(texture) != expected_textures[k])
         throw std::logic_error("RSAA pre-pass: the engine's draw rebound texture unit " + std::to_string(first + k) +
                                " (RsaaSettings::prepass_first_unit + " + std::to_string(k) + ")");
+      GLint sampler = 0;  // another sampler object (a linear one) makes the integer textures read as zero
+      glGetIntegeri_v(GL_SAMPLER_BINDING, GLuint(first + k), &sampler);
+      if (GLuint(sampler) != gl_->nearest.get())
+        throw std::logic_error("RSAA pre-pass: the engine's draw bound sampler object " + std::to_string(sampler) +
+                               " to texture unit " + std::to_string(first + k) + " (RsaaSettings::prepass_first_unit + " +
+                               std::to_string(k) + ")");
     }
   });
 }
 
 void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
+  gl::check_none_pending("RsaaPass::resolve");
   validate_frame(frame, width_, height_, settings_);
   gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
   if (settings_.output_mask && mask_output)
@@ -684,6 +736,16 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     throw std::invalid_argument("RsaaPass::resolve: the output is the frame's colour texture; resolving in place needs "
                                 "RsaaSettings::post \"compute\", not \"" + settings_.post +
                                 "\" (which reads the colour while it writes it)");
+  // Codes never written are undefined (zeros on llvmpipe: a third of a frame's pixels resampled).
+  if (!codes_ready_)
+    throw std::logic_error("RsaaPass::resolve before render_subsamples (or after one that did not finish): "
+                           "the pass has no similarity codes for this frame");
+  // Two views pre-passed, then resolved, get the second's codes for both.
+  if (prepass_frame_[0] != frame.centre_normal || prepass_frame_[1] != frame.centre_primitive ||
+      prepass_frame_[2] != frame.centre_depth)
+    throw std::logic_error("RsaaPass::resolve: the frame's centre_normal, centre_primitive or centre_depth is not the "
+                           "last render_subsamples' frame's: the codes are another frame's (resolve each frame after "
+                           "its own pre-pass)");
   std::vector<int> units;
   for (int unit = 0; unit < kPostUnits; ++unit) units.push_back(unit);
   const gl::SavedState saved(units, {settings_.uniform_binding});
@@ -694,7 +756,9 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     targets.push_back({mask_output});
   }
   write_frame_uniforms(frame);
-  glBindSamplers(0, kPostUnits, nullptr);  // the textures' own filtering (an engine's sampler objects are restored)
+  std::vector<GLuint> samplers(kPostUnits, gl_->nearest.get());  // (an engine's sampler objects are restored)
+  samplers[kColourUnit] = gl_->bilinear.get();
+  glBindSamplers(0, kPostUnits, samplers.data());
   glBindTextureUnit(kColourUnit, frame.colour);
   glBindTextureUnit(kNormalUnit, frame.centre_normal);
   glBindTextureUnit(kDepthUnit, frame.centre_depth);
@@ -716,7 +780,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
     // Every pixel's colour as it is (and the all-similar mask): the resolve pass overwrites the
     // edge pixels. An image copy, and an edge pass that writes depth only: on llvmpipe an edge
     // pass that also fetched and wrote every colour cost more (README, *Cheaper post-processes*).
-    copy_colour(frame, output);
+    copy_colour(frame.colour, output);
     if (settings_.output_mask) clear_to_all_similar(mask_output);
     // Edge pass: depth 1 everywhere, then the full-screen triangle's depth (0.5, or 0 under
     // glClipControl GL_ZERO_TO_ONE) where the mask is not all-similar (the others discard).
@@ -744,14 +808,22 @@ void RsaaPass::clear_to_all_similar(GLuint mask_output) const {
   glClearTexImage(mask_output, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &all_similar);
 }
 
-// The frame's colour into the output as it is, by a framebuffer blit at scale 1 (exact): unlike
-// glCopyImageSubData it takes textures that are not mipmap-complete (a glTexImage2D output with
-// the default minification filter).
-void RsaaPass::copy_colour(const RsaaFrame& frame, GLuint output) {
-  const GLuint source = gl_->copy_source.get({{frame.colour}}, {});
-  const GLuint target = gl_->copy_target.get({{output}}, {});
-  glBlitNamedFramebuffer(source, target, 0, 0, frame.width, frame.height, 0, 0, frame.width, frame.height,
-                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+// One image into another as it is (the frame's colour into the output), by a framebuffer blit at
+// scale 1 (exact): unlike glCopyImageSubData it takes textures that are not mipmap-complete (a
+// glTexImage2D output with the default minification filter).
+void RsaaPass::copy_colour(GLuint from, GLuint to) {
+  const GLuint source = gl_->copy_source.get({{from}}, {});
+  const GLuint target = gl_->copy_target.get({{to}}, {});
+  glBlitNamedFramebuffer(source, target, 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+void RsaaPass::make_edge_list(std::int64_t capacity) {
+  // At least a row: a round lists whole rows.
+  list_capacity_ = std::max<std::int64_t>(capacity, width_);
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  gl_->edge_list = gl::Buffer(buffer);
+  glNamedBufferStorage(buffer, GLsizeiptr(kListHeadBytes + 4 * list_capacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 // The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
@@ -764,36 +836,57 @@ void RsaaPass::copy_colour(const RsaaFrame& frame, GLuint output) {
 // edge pixel; here every lane holds one (README, *Cheaper post-processes*).
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
   const gl::SavedComputeState saved({kEdgeListBinding}, {kOutputImageUnit, kMaskImageUnit});
-  // In place, the image already holds every edge-free pixel's colour: no copy.
+  // The rows listed per round: all of them unless the list cannot hold every pixel (then the
+  // list is filled and resolved again for each band of rows).
+  const int rows = int(std::min<std::int64_t>(height_, list_capacity_ / width_));
+  const bool one_round = rows == height_;
   const bool in_place = output == frame.colour;
-  if (!in_place)
-    copy_colour(frame, output);
   if (in_place && gl_->scratch.get() == 0) gl_->scratch = gl::make_texture_2d(GL_RGBA16F, width_, height_);
-  if (settings_.output_mask) clear_to_all_similar(mask_output);
-  // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
-  const GLuint empty_list[4] = {0, 1, 1, 0};
-  glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
-  glUseProgram(gl_->classify_program.get());
-  glDispatchCompute(GLuint(frame.width + 7) / 8, GLuint(frame.height + 7) / 8, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(gl_->list_size_program.get());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  // In place in one round, the image already holds every edge-free pixel's colour: no copy; the
+  // listed pixels are resolved into the scratch image, then copied over. In several rounds a
+  // round's copy would overwrite 1x colours the next round's resolve reads: the image is resolved
+  // into the scratch image as into a separate output, then copied back whole.
+  const bool scatter = in_place && one_round;
   const GLuint resolved = in_place ? gl_->scratch.get() : output;
-  glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  if (settings_.output_mask)
-    glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
-  glUseProgram(gl_->list_resolve_program.get());
+  if (!in_place)
+    copy_colour(frame.colour, output);
+  else if (!one_round)
+    copy_colour(frame.colour, resolved);
+  if (settings_.output_mask) clear_to_all_similar(mask_output);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
-  glDispatchComputeIndirect(0);
-  if (in_place) {
-    // Every listed pixel resolved from the 1x colours before any of them is overwritten.
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(kMaskImageUnit, gl_->scratch.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
-    glUseProgram(gl_->scatter_program.get());
+  for (int first = 0; first < height_; first += rows) {
+    const int end = std::min(first + rows, height_);
+    // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
+    const GLuint empty_list[4] = {0, 1, 1, 0};
+    glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
+    glUseProgram(gl_->classify_program.get());
+    glUniform2i(kClassifyRowsLocation, first, end);
+    glDispatchCompute(GLuint(width_ + 7) / 8, GLuint(end - first + 7) / 8, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(gl_->list_size_program.get());
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    if (settings_.output_mask)
+      glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
+    glUseProgram(gl_->list_resolve_program.get());
     glDispatchComputeIndirect(0);
+    if (scatter) {
+      // Every listed pixel resolved from the 1x colours before any of them is overwritten.
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(kMaskImageUnit, gl_->scratch.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+      glUseProgram(gl_->scatter_program.get());
+      glDispatchComputeIndirect(0);
+    }
+    // The next round rewrites the list this one read (and its head, by a buffer update).
+    if (end < height_)
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  }
+  if (in_place && !one_round) {
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);  // the blit reads what the resolve stored
+    copy_colour(resolved, output);
   }
   // The engine reads the output next, by any path (texture, framebuffer, copy, image).
   glMemoryBarrier(GL_ALL_BARRIER_BITS);

@@ -24,7 +24,10 @@
 // RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
 // and resolve() check the four (name, format, size, the colour's linear filter) and throw
 // std::invalid_argument naming the field, so a forgotten or wrong binding is an error, not a
-// wrong image.
+// wrong image. The pass reads the four through its own sampler objects (the colour bilinear and
+// clamped to the edge, the others nearest): their own wrap modes, minification filters, depth
+// comparison and completeness under them (a glTexImage2D texture with the default mipmap filter)
+// do not matter.
 //
 // DEPTH CONVENTION (RsaaSettings::depth). "gl", OpenGL's default: glClipControl(GL_LOWER_LEFT,
 // GL_NEGATIVE_ONE_TO_ONE), nearer is less, inverse_projection maps NDC (z = 2 depth - 1) to view
@@ -45,8 +48,8 @@
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
 // frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample;
 // twice for a union pattern). Before each call the pass binds its framebuffer, the viewport, the
-// pre-pass state below, the uniform block at settings.uniform_binding and three textures at units
-// settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
+// pre-pass state below, the uniform block at settings.uniform_binding and three textures (and its
+// nearest sampler objects) at units settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
 // set culling for its geometry, but must draw with the colour mask, depth test, function and
 // writes and blending the pass set (the codes depend on them; state it changes after drawing is
 // its own business). After each call the pass checks that the current program declares the
@@ -69,22 +72,27 @@
 //   u_material (uint)             with material_edges: the draw's material as written into
 //                                 centre_primitive's second channel (default 0)
 //
-// The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling
-// and rasterizer discard off, filled polygons, colour mask: the subsample's channel (jittered) or
-// all (multisample), for the multisample pre-pass sample shading on, and stencil test off, or,
+// The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling,
+// logic op and rasterizer discard off, filled polygons, colour mask: the subsample's channel
+// (jittered) or all (multisample), for the multisample pre-pass sample shading and GL_MULTISAMPLE
+// on, sample mask, coverage value and alpha to coverage off, and stencil test off, or,
 // with prepass_cull "neighbours", on (GL_EQUAL 1, no stencil writes).
 //
-// GL STATE. Every call restores what it changes: framebuffer bindings, viewport, current
-// program, depth test/function/mask, stencil test/functions/operations/masks, blending and
-// colour masks of every draw buffer, scissor test, culling, polygon mode, rasterizer discard,
-// sample shading, the vertex array, the textures and sampler objects bound to units 0-8 and to
+// GL STATE. Every call restores what it changes: framebuffer bindings, the viewports, depth
+// ranges and scissor tests of every viewport index, current program, depth test/function/mask,
+// stencil test/functions/operations/masks, blending and colour masks of every draw buffer, culling, polygon mode, rasterizer discard,
+// sample shading, GL_MULTISAMPLE, sample mask and coverage, alpha to coverage/one, logic op, the
+// generic uniform buffer binding, the vertex array, the textures and sampler objects bound to units 0-8 and to
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
 // shader storage buffer at binding 0 (and the generic one), image units 0 and 1 and the
 // indirect-dispatch buffer; the engine's scissor, masks, culling and samplers do not reach the
 // pass. (A program the engine deleted while current cannot be restored: none is current after.)
+// A GL error already set when a call begins is the engine's: the call throws std::runtime_error
+// (gl::GlError) saying so, before it does anything.
 // Textures and programs they create belong to the RsaaPass object.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -213,7 +221,7 @@ class RsaaTargets {
   RsaaTargets& operator=(RsaaTargets&&) noexcept;
 
   // Colour to `background` (linear RGB), normal and primitive to 0 (background), depth to
-  // `far_depth` (0 for reverse Z).
+  // `far_depth` (0 for reverse Z): every pixel, whatever scissor test and masks the GL has.
   void clear(const float background[3], float far_depth = 1.0f) const;
   // Binds the framebuffer to GL_FRAMEBUFFER: colour at location 0, normal 1, primitive (and
   // material) 2, depth.
@@ -243,7 +251,8 @@ class RsaaPass {
  public:
   using DrawGeometry = std::function<void(GlName program, glm::vec2 jitter_ndc)>;
 
-  // Needs a current GL 4.5 context. Throws std::invalid_argument for bad settings and
+  // Needs a current GL 4.5 context. Throws std::invalid_argument for bad settings or a size the
+  // driver cannot hold (below 1 or above its texture, framebuffer or viewport limit) and
   // std::runtime_error when the baked table does not match the pattern's positions.
   RsaaPass(const RsaaSettings& settings, int width, int height);
   ~RsaaPass();
@@ -257,7 +266,9 @@ class RsaaPass {
   // rsaa_prepass.glsl with its includes expanded.
   std::string prepass_glsl() const;
   // Writes the anti-aliased colour into `output` (RGBA16F, the frame's size), and the mask into
-  // `mask_output` (R32UI) when settings.output_mask.
+  // `mask_output` (R32UI) when settings.output_mask. Throws std::logic_error before any pre-pass
+  // (or after one that did not finish), or for a frame whose normal, primitive or depth texture
+  // is not the last pre-pass's: there are no codes to resolve it with.
   void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
 
   const SamplePattern& pattern() const { return pattern_; }
@@ -277,7 +288,10 @@ class RsaaPass {
   struct Objects;  // GL objects, defined in rsaa_pass.cpp
   void write_frame_uniforms(const RsaaFrame& frame) const;
   void resolve_edge_list(const RsaaFrame& frame, GlName output, GlName mask_output);
-  void copy_colour(const RsaaFrame& frame, GlName output);
+  void copy_colour(GlName from, GlName to);
+  // The compute post-process's edge list, for `capacity` pixels (at least a row).
+  void make_edge_list(std::int64_t capacity);
+  friend struct RsaaPassTesting;  // tests/test_rsaa_pass_api.cpp: an edge list smaller than the image
   void clear_to_all_similar(GlName mask_output) const;
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
@@ -287,6 +301,9 @@ class RsaaPass {
   bool union_ = false;   // the multisample pre-pass as two draws of half the samples (union pattern)
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
+  bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
+  GlName prepass_frame_[3] = {};  // its frame's centre_normal, centre_primitive, centre_depth
+  std::int64_t list_capacity_ = 0;  // pixels the edge list holds (compute post-process)
   int width_, height_;
   std::unique_ptr<Objects> gl_;
 };

@@ -11,9 +11,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "rsaa_post_list.glsl"
 
+// The rows [x, y) this dispatch lists, from row x: all of them, or a band when the list cannot
+// hold every pixel of the image (RsaaPass then lists and resolves band after band).
+layout(location = 0) uniform ivec2 rsaa_rows;
+
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, ivec2(rsaa_viewport))) || !rsaa_pixel_has_edge(pixel)) return;
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, rsaa_rows.x);
+  if (pixel.x >= int(rsaa_viewport.x) || pixel.y >= rsaa_rows.y || !rsaa_pixel_has_edge(pixel)) return;
   uint slot = atomicAdd(rsaa_list_count, 1u);
   rsaa_list_pixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16u);
 }

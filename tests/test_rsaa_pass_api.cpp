@@ -195,6 +195,14 @@ TEST_F(RsaaPassApi, AnEngineProgramWithoutTheBlockOrThatRebindsAUnitIsAnError) {
               glBindTextureUnit(14, material.get());
             }).find("rebound texture unit 14"),
             std::string::npos);
+  GLuint linear = 0;
+  glCreateSamplers(1, &linear);
+  EXPECT_NE(logic_error_of([&] {
+              glUseProgram(engine.get());
+              glBindSampler(15, linear);
+            }).find("bound sampler object " + std::to_string(linear) + " to texture unit 15"),
+            std::string::npos);
+  glDeleteSamplers(1, &linear);
   EXPECT_EQ(logic_error_of([&] { glUseProgram(engine.get()); }), "");
   gl::check("after the refused draws");
 }
@@ -218,6 +226,25 @@ TEST_F(RsaaPassApi, AProgramDeletedWhileCurrentIsNotRestored) {
   GLint current = -1;
   glGetIntegerv(GL_CURRENT_PROGRAM, &current);
   EXPECT_EQ(current, 0);
+}
+
+// An image size outside the driver's limits (a minimised window's 0 x 0 among them) is refused
+// naming the size and the limit; it was a GL error from inside ("GL error 0x0501 in
+// make_texture_2d").
+TEST_F(RsaaPassApi, ImageSizesOutsideTheDriversLimitsAreRefused) {
+  GLint max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const struct {
+    int width, height;
+  } sizes[] = {{0, 0}, {-1, 5}, {5, -1}, {max_texture + 1, 1}, {1, max_texture + 1}};
+  for (const auto& size : sizes) {
+    const std::string named = std::to_string(size.width) + "x" + std::to_string(size.height) + " image";
+    EXPECT_NE(invalid_argument_of([&] { RsaaPass(RsaaSettings{}, size.width, size.height); }).find("RsaaPass: a " + named),
+              std::string::npos);
+    EXPECT_NE(invalid_argument_of([&] { RsaaTargets(size.width, size.height); }).find("RsaaTargets: a " + named),
+              std::string::npos);
+  }
+  gl::check("after the refused sizes");
 }
 
 TEST_F(RsaaPassApi, ResourceSlotsOutsideTheDriversLimitsAreRefused) {
@@ -259,6 +286,14 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
     return gl::Buffer(b);
   }();
   glBindBufferRange(GL_UNIFORM_BUFFER, 13, engine_buffer.get(), 0, 128);  // the pass's binding
+  // The generic uniform buffer binding (glBufferSubData's target), which binding an indexed one sets.
+  const gl::Buffer engine_generic_uniforms = [] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, 64, nullptr, 0);
+    return gl::Buffer(b);
+  }();
+  glBindBuffer(GL_UNIFORM_BUFFER, engine_generic_uniforms.get());
   glEnable(GL_SAMPLE_SHADING);
   glMinSampleShading(0.25f);
   // ... and the state an engine leaves for its own draws: culling (the full-screen triangle
@@ -304,6 +339,11 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   }();
   glBindImageTexture(1, engine_array.get(), 1, GL_FALSE, 2, GL_WRITE_ONLY, GL_RGBA8);  // level 1, layer 2
 
+  // Another viewport index's rectangle, depth range and scissor test (for gl_ViewportIndex draws):
+  // glViewport, glDepthRange and glDisable(GL_SCISSOR_TEST) set every index.
+  glViewportIndexedf(1, 5.5f, 6.0f, 7.0f, 8.0f);
+  glDepthRangeIndexed(1, 0.25, 0.75);
+  glDisablei(GL_SCISSOR_TEST, 1);  // on for index 0 (above)
   RsaaSettings settings;
   settings.prepass_cull = "neighbours";  // the pass's stencil state too
   RsaaPass pass(settings, kWidth, kHeight);
@@ -325,6 +365,15 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(GLuint(framebuffer), engine_framebuffer.get());
   EXPECT_EQ(viewport[0], 1);
   EXPECT_EQ(viewport[3], 4);
+  GLfloat viewport1[4] = {};
+  GLdouble depth_range1[2] = {};
+  glGetFloati_v(GL_VIEWPORT, 1, viewport1);
+  glGetDoublei_v(GL_DEPTH_RANGE, 1, depth_range1);
+  EXPECT_EQ(viewport1[0], 5.5f);
+  EXPECT_EQ(viewport1[3], 8.0f);
+  EXPECT_EQ(depth_range1[0], 0.25);
+  EXPECT_EQ(depth_range1[1], 0.75);
+  EXPECT_FALSE(glIsEnabledi(GL_SCISSOR_TEST, 1));
   EXPECT_EQ(GLuint(program), renderer.shade_program());
   EXPECT_TRUE(glIsEnabled(GL_BLEND));
   EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST));
@@ -342,6 +391,9 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(GLuint(unit13), engine_texture.get());
   EXPECT_EQ(GLuint(uniform_buffer), engine_buffer.get());
   EXPECT_EQ(uniform_size, 128);
+  GLint generic_uniforms = 0;
+  glGetIntegerv(GL_UNIFORM_BUFFER_BINDING, &generic_uniforms);
+  EXPECT_EQ(GLuint(generic_uniforms), engine_generic_uniforms.get());
   EXPECT_TRUE(glIsEnabled(GL_SAMPLE_SHADING));
   EXPECT_EQ(min_sample_shading, 0.25f);
   GLint polygon_mode = 0, sampler = 0;
@@ -431,6 +483,291 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   for (std::size_t p = 0; p < a.pixels.size(); ++p) resampled += a.pixels[p].r != one_x.pixels[p].r;
   EXPECT_GT(resampled, 20);
   gl::check("state test");
+}
+
+// State an engine turns on for its own draws that decides which samples a fragment writes (the
+// multisample pre-pass: GL_MULTISAMPLE off, a sample mask, a coverage value) or how a code combines
+// with the one in the target (a logic op, the jittered pre-pass's integer codes) does not reach
+// the pass: the masks are those of a clean state, and the engine's state is as it was.
+TEST_F(RsaaPassApi, TheEnginesSampleAndLogicOpStateDoesNotReachThePrePass) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaSettings multisample;
+  multisample.pattern = "gl4x", multisample.prepass = "msaa";
+  for (RsaaSettings settings : {RsaaSettings{}, multisample}) {
+    settings.output_mask = true;
+    RsaaPass pass(settings, kWidth, kHeight);
+    const auto masks = [&] {
+      scene.render_subsamples(pass);
+      const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+      const gl::Texture mask = gl::make_texture_2d(GL_R32UI, kWidth, kHeight);
+      pass.resolve(scene.frame(), output.get(), mask.get());
+      return read_back_uints(mask.get(), kWidth, kHeight);
+    };
+    const std::vector<std::uint32_t> clean = masks();
+    const struct {
+      GLenum cap;
+      bool on;
+    } states[] = {{GL_MULTISAMPLE, false}, {GL_SAMPLE_MASK, true}, {GL_SAMPLE_COVERAGE, true}, {GL_COLOR_LOGIC_OP, true}};
+    glSampleMaski(0, 0x1u);
+    glSampleCoverage(0.25f, GL_FALSE);
+    glLogicOp(GL_XOR);
+    for (const auto& state : states) {
+      state.on ? glEnable(state.cap) : glDisable(state.cap);
+      const std::vector<std::uint32_t> engine = masks();
+      EXPECT_EQ(bool(glIsEnabled(state.cap)), state.on) << "capability 0x" << std::hex << state.cap;
+      state.on ? glDisable(state.cap) : glEnable(state.cap);
+      int differing = 0;
+      for (std::size_t p = 0; p < clean.size(); ++p) differing += clean[p] != engine[p];
+      EXPECT_EQ(differing, 0) << settings.prepass << " pre-pass, capability 0x" << std::hex << state.cap
+                              << (state.on ? " on" : " off");
+    }
+    glSampleMaski(0, ~0u);
+    glSampleCoverage(1.0f, GL_FALSE);
+    glLogicOp(GL_COPY);
+  }
+  gl::check("sample and logic op state");
+}
+
+// The pass reads the frame through its own sampler objects: the frame textures' own sampling
+// parameters and an engine's sampler objects do not change the image or the masks. Without them
+// a GL_REPEAT colour (GL's default) blended the opposite image border into edge pixels, and a
+// texture incomplete under its parameters read as zero: a glTexImage2D colour with the default
+// mipmap minification filter (black edge pixels), integer G-buffer textures filtered linearly, an
+// engine's linear sampler object on the pre-pass's units (most masks wrong).
+TEST_F(RsaaPassApi, TheFramesSamplingParametersAndAnEnginesSamplersDoNotReachThePass) {
+  constexpr int width = 160, height = 120;
+  const test::SceneFrame scene("builtin:default", width, height);
+  RsaaSettings settings;
+  settings.output_mask = true;
+  RsaaPass pass(settings, width, height);
+  struct Result {
+    Image image;
+    std::vector<std::uint32_t> masks;
+  };
+  const auto run = [&](const RsaaFrame& frame) {
+    scene.render_subsamples(pass);
+    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+    const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+    pass.resolve(frame, output.get(), mask.get());
+    return Result{read_back_image(output.get(), width, height), read_back_uints(mask.get(), width, height)};
+  };
+  const auto expect_same = [&](const Result& a, const Result& b, const char* what) {
+    int differing_colour = 0, differing_mask = 0;
+    for (std::size_t p = 0; p < a.masks.size(); ++p) {
+      const Rgb x = a.image.pixels[p], y = b.image.pixels[p];
+      differing_colour += x.r != y.r || x.g != y.g || x.b != y.b;
+      differing_mask += a.masks[p] != b.masks[p];
+    }
+    EXPECT_EQ(differing_colour, 0) << what;
+    EXPECT_EQ(differing_mask, 0) << what;
+  };
+  const RsaaFrame frame = scene.frame();
+  const Result clean = run(frame);
+  const Image one_x = read_back_image(frame.colour, width, height);
+  int resampled = 0;
+  for (std::size_t p = 0; p < one_x.pixels.size(); ++p) resampled += clean.image.pixels[p].r != one_x.pixels[p].r;
+  EXPECT_GT(resampled, 100);  // the comparisons cover resolved pixels
+
+  // An engine's trilinear, repeating sampler object on every unit the pass reads.
+  GLuint engine_sampler = 0;
+  glCreateSamplers(1, &engine_sampler);
+  glSamplerParameteri(engine_sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glSamplerParameteri(engine_sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLuint unit = 0; unit < 16; ++unit) glBindSampler(unit, engine_sampler);
+  expect_same(clean, run(frame), "an engine's sampler objects");
+  for (GLuint unit = 0; unit < 16; ++unit) glBindSampler(unit, 0);
+  glDeleteSamplers(1, &engine_sampler);
+
+  // The textures' own parameters: a repeating colour, linearly filtered integer textures (incomplete),
+  // a depth comparison.
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glTextureParameteri(frame.colour, wrap, GL_REPEAT);
+  for (GLuint integer : {frame.centre_normal, frame.centre_primitive}) {
+    glTextureParameteri(integer, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(integer, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  }
+  glTextureParameteri(frame.centre_depth, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  expect_same(clean, run(frame), "the textures' own parameters");
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glTextureParameteri(frame.colour, wrap, GL_CLAMP_TO_EDGE);
+  for (GLuint integer : {frame.centre_normal, frame.centre_primitive}) {
+    glTextureParameteri(integer, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(integer, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  glTextureParameteri(frame.centre_depth, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+
+  // A colour made as glTexImage2D leaves it: level 0 only, the mipmap minification filter
+  // (incomplete), only the magnification filter set as the pass asks.
+  const gl::Texture incomplete = [&] {
+    GLuint t = 0;
+    glGenTextures(1, &t);
+    glBindTexture(GL_TEXTURE_2D, t);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    std::vector<float> texels(std::size_t(width) * height * 4);
+    glGetTextureImage(frame.colour, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+    glTextureSubImage2D(t, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, texels.data());
+    return gl::Texture(t);
+  }();
+  RsaaFrame incomplete_colour = frame;
+  incomplete_colour.colour = incomplete.get();
+  expect_same(clean, run(incomplete_colour), "an incomplete colour");
+  gl::check("sampling parameters");
+}
+
+// Making a pass leaves the engine's framebuffer bindings as they were (reading the driver's
+// sample positions, for gl4x or the multisample pre-pass, bound the default framebuffer after),
+// and the engine's pixel unpack state does not reach the table the pass uploads (a bound unpack
+// buffer failed with GL_INVALID_OPERATION, GL_UNPACK_SKIP_PIXELS shifted the table).
+TEST_F(RsaaPassApi, MakingAPassLeavesTheEnginesFramebufferAndUnpackStateAlone) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaSettings multisample;
+  multisample.pattern = "gl4x", multisample.prepass = "msaa";
+  const gl::Texture draw_texture = gl::make_texture_2d(GL_RGBA8, 4, 4), read_texture = gl::make_texture_2d(GL_RGBA8, 4, 4);
+  const gl::Framebuffer draw_framebuffer = gl::make_framebuffer({{draw_texture.get()}});
+  const gl::Framebuffer read_framebuffer = gl::make_framebuffer({{read_texture.get()}});
+  const gl::Buffer unpack_buffer = [] {
+    GLuint b = 0;
+    glCreateBuffers(1, &b);
+    glNamedBufferStorage(b, 64, nullptr, 0);
+    return gl::Buffer(b);
+  }();
+  for (const RsaaSettings& settings : {RsaaSettings{}, multisample}) {
+    const auto image = [&](RsaaPass& pass) {
+      scene.render_subsamples(pass);
+      const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+      pass.resolve(scene.frame(), output.get());
+      return read_back_image(output.get(), kWidth, kHeight);
+    };
+    RsaaPass clean_pass(settings, kWidth, kHeight);
+    const Image clean = image(clean_pass);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw_framebuffer.get());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, read_framebuffer.get());
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, unpack_buffer.get());
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+    std::optional<RsaaPass> pass;
+    try {
+      pass.emplace(settings, kWidth, kHeight);
+    } catch (const gl::GlError& e) {
+      ADD_FAILURE() << settings.pattern << ": " << e.what();
+    }
+    GLint draw = 0, read = 0, unpack = 0, skip_pixels = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack);
+    glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skip_pixels);
+    EXPECT_EQ(GLuint(draw), draw_framebuffer.get()) << settings.pattern;
+    EXPECT_EQ(GLuint(read), read_framebuffer.get()) << settings.pattern;
+    EXPECT_EQ(GLuint(unpack), unpack_buffer.get()) << settings.pattern;
+    EXPECT_EQ(skip_pixels, 3) << settings.pattern;
+    // Without the unpack buffer (a shifted table then gave another image).
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    if (!pass) pass.emplace(settings, kWidth, kHeight);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const Image engine = image(*pass);
+    int differing = 0;
+    for (std::size_t p = 0; p < clean.pixels.size(); ++p) {
+      const Rgb a = clean.pixels[p], b = engine.pixels[p];
+      differing += a.r != b.r || a.g != b.g || a.b != b.b;
+    }
+    EXPECT_EQ(differing, 0) << settings.pattern;
+  }
+  gl::check("making passes");
+}
+
+// RsaaTargets::clear() clears every pixel of the four targets whatever scissor test and masks the
+// engine left (a clear obeys them), and leaves them as they were.
+TEST_F(RsaaPassApi, TheTargetsClearIgnoresTheEnginesScissorAndMasks) {
+  RsaaTargets targets(8, 8);
+  const float background[3] = {0.5f, 0.25f, 0.125f};
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, 1, 1);
+  glColorMask(GL_FALSE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_FALSE);
+  targets.clear(background, 0.5f);
+  EXPECT_TRUE(glIsEnabled(GL_SCISSOR_TEST));
+  GLboolean colour_mask[4] = {}, depth_mask = GL_TRUE;
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour_mask);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask);
+  EXPECT_EQ(colour_mask[0], GL_FALSE);
+  EXPECT_EQ(depth_mask, GL_FALSE);
+  glDisable(GL_SCISSOR_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  const RsaaFrame frame = targets.frame(glm::mat4(1.0f));
+  const Image colour = read_back_image(frame.colour, 8, 8);
+  std::vector<float> depth(64);
+  glGetTextureImage(frame.centre_depth, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
+  int wrong = 0;
+  for (const Rgb& p : colour.pixels) wrong += p.r != 0.5f || p.g != 0.25f || p.b != 0.125f;
+  for (float d : depth) wrong += d != 0.5f;
+  EXPECT_EQ(wrong, 0);
+  gl::check("clearing the targets");
+}
+
+// A GL error the engine left set is reported as the engine's, by the call that finds it, before
+// the call does anything: it was reported as the pass's ("GL error 0x0500 in make_framebuffer",
+// from inside the resolve, or "in make_texture_2d" making a pass).
+TEST_F(RsaaPassApi, AGlErrorTheEngineLeftIsReportedAsItsOwn) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  const auto message_of = [](const std::function<void()>& call) -> std::string {
+    glEnable(GLenum(0xDEAD));  // GL_INVALID_ENUM, the engine's
+    try {
+      call();
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string made = message_of([&] { RsaaPass(RsaaSettings{}, kWidth, kHeight); });
+  EXPECT_NE(made.find("0x0500 was already set when RsaaPass::RsaaPass was called"), std::string::npos) << made;
+  EXPECT_NE(message_of([&] { RsaaTargets(kWidth, kHeight); }).find("when RsaaTargets::RsaaTargets was called"),
+            std::string::npos);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  EXPECT_NE(message_of([&] { scene.render_subsamples(pass); }).find("when RsaaPass::render_subsamples was called"),
+            std::string::npos);
+  scene.render_subsamples(pass);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  const float marker[4] = {-1.0f, -1.0f, -1.0f, -1.0f};
+  glClearTexImage(output.get(), 0, GL_RGBA, GL_FLOAT, marker);
+  const std::string resolved = message_of([&] { pass.resolve(scene.frame(), output.get()); });
+  EXPECT_NE(resolved.find("when RsaaPass::resolve was called: an earlier GL call of the caller's failed"),
+            std::string::npos)
+      << resolved;
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  int written = 0;
+  for (const Rgb& p : read_back_image(output.get(), kWidth, kHeight).pixels) written += p.r != -1.0f;
+  EXPECT_EQ(written, 0);  // the refused call did nothing
+  pass.resolve(scene.frame(), output.get());  // the next call works
+}
+
+// resolve() with no codes (no pre-pass yet, or one whose callback threw) is an error: the code
+// textures were undefined (zeros on llvmpipe: a third of the default scene's pixels resampled);
+// so is a frame whose G-buffer is not the last pre-pass's (its codes are another view's).
+TEST_F(RsaaPassApi, ResolvingWithoutAFinishedPrePassIsAnError) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  const auto logic_error_of = [&] {
+    try {
+      pass.resolve(scene.frame(), output.get());
+    } catch (const std::logic_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(logic_error_of().find("RsaaPass::resolve before render_subsamples"), std::string::npos);
+  scene.render_subsamples(pass);
+  EXPECT_EQ(logic_error_of(), "");
+  EXPECT_THROW(pass.render_subsamples(scene.frame(), [](GLuint, glm::vec2) { throw std::runtime_error("engine"); }),
+               std::runtime_error);
+  EXPECT_NE(logic_error_of().find("did not finish"), std::string::npos);
+  // Two views pre-passed one after the other, then resolved: the first's codes are gone.
+  const test::SceneFrame other_view("builtin:edges", kWidth, kHeight);
+  scene.render_subsamples(pass);
+  other_view.render_subsamples(pass);
+  EXPECT_NE(logic_error_of().find("the codes are another frame's"), std::string::npos);
+  gl::check("resolving without codes");
 }
 
 // What an engine can get wrong without a GL error is refused: a colour texture without linear
@@ -787,6 +1124,143 @@ TEST_F(RsaaPassApi, ZeroToOneAndReverseZDepthGiveTheDefaultMasks) {
     std::printf("depth convention %zu: %d of %d edge masks differ from OpenGL's default\n", k, differing, edges);
   }
   gl::check("depth conventions");
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+
+// The pass's internals a test reaches (RsaaPass's friend).
+struct RsaaPassTesting {
+  static void set_edge_list_capacity(RsaaPass& pass, std::int64_t pixels) { pass.make_edge_list(pixels); }
+};
+
+namespace {
+
+// An image whose edge list (every pixel) exceeds the driver's shader storage block is resolved in
+// rounds of rows, each listed and resolved in turn: the same image and masks as one round, in
+// place or not. A 8192 x 4096 pass was refused on llvmpipe (128 MiB blocks) although the renderer
+// takes 8192 pixels per side; the rounds are run here with a small list at a small size.
+TEST_F(RsaaPassApi, AnEdgeListSmallerThanTheImageResolvesItInRounds) {
+  GLint64 max_block = 0;
+  GLint max_texture = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const int wide = std::min(max_texture, 8192), tall = int(std::min<GLint64>(max_texture, max_block / 4 / wide));
+  EXPECT_NO_THROW(RsaaPass(RsaaSettings{}, wide, tall)) << wide << "x" << tall;
+
+  constexpr int width = 163, height = 117;
+  const test::SceneFrame scene("builtin:fence", width, height);
+  RsaaSettings single;
+  single.post = "single", single.output_mask = true;
+  RsaaPass reference(single, width, height);
+  scene.render_subsamples(reference);
+  const gl::Texture reference_output = gl::make_texture_2d(GL_RGBA16F, width, height);
+  const gl::Texture reference_mask = gl::make_texture_2d(GL_R32UI, width, height);
+  reference.resolve(scene.frame(), reference_output.get(), reference_mask.get());
+  const Image expected = read_back_image(reference_output.get(), width, height);
+  const std::vector<std::uint32_t> expected_masks = read_back_uints(reference_mask.get(), width, height);
+  const Image one_x = read_back_image(scene.frame().colour, width, height);
+  int resampled = 0;
+  for (std::size_t p = 0; p < one_x.pixels.size(); ++p) resampled += expected.pixels[p].r != one_x.pixels[p].r;
+  EXPECT_GT(resampled, 100);
+
+  RsaaSettings settings;
+  settings.output_mask = true;
+  // Rounds of one row, of seven rows and a last short one, of all but one row; a list smaller
+  // than a row holds a row.
+  for (const std::int64_t capacity : {std::int64_t(width), std::int64_t(width) * 7 + 3,
+                                      std::int64_t(width) * (height - 1), std::int64_t(1)}) {
+    for (const bool in_place : {false, true}) {
+      SCOPED_TRACE("capacity " + std::to_string(capacity) + (in_place ? ", in place" : ""));
+      test::SceneFrame frame_scene("builtin:fence", width, height);
+      RsaaPass pass(settings, width, height);
+      RsaaPassTesting::set_edge_list_capacity(pass, capacity);
+      frame_scene.render_subsamples(pass);
+      const gl::Texture separate = gl::make_texture_2d(GL_RGBA16F, width, height);
+      const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+      const GLuint output = in_place ? frame_scene.frame().colour : separate.get();
+      pass.resolve(frame_scene.frame(), output, mask.get());
+      const Image image = read_back_image(output, width, height);
+      int differing = 0;
+      for (std::size_t p = 0; p < image.pixels.size(); ++p) {
+        const Rgb a = expected.pixels[p], b = image.pixels[p];
+        differing += a.r != b.r || a.g != b.g || a.b != b.b;
+      }
+      EXPECT_EQ(differing, 0);
+      EXPECT_EQ(read_back_uints(mask.get(), width, height), expected_masks);
+    }
+  }
+  gl::check("edge list rounds");
+}
+
+// A context whose driver gives a deleted object's name to the next object made, as most drivers
+// do (Mesa does so only with its force_gl_names_reuse option, read when the context is made).
+class RsaaPassApiReusedNames : public test::GlTest {
+ protected:
+  static void SetUpTestSuite() {
+    setenv("force_gl_names_reuse", "true", 1);
+    test::GlTest::SetUpTestSuite();
+    unsetenv("force_gl_names_reuse");
+  }
+};
+
+// An engine that deletes its output or colour texture and makes another of the same format and
+// size gets the new one resolved, though its name is the old one's: the pass's framebuffers, made
+// for the old texture and not bound when it was deleted, still held it (the copy and the fragment
+// passes wrote into the deleted output, or copied the deleted colour).
+TEST_F(RsaaPassApiReusedNames, ATextureMadeUnderADeletedOnesNameIsTheOneResolved) {
+  constexpr int width = 64, height = 48;
+  GLuint first = 0, second = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &first);
+  glDeleteTextures(1, &first);
+  glCreateTextures(GL_TEXTURE_2D, 1, &second);
+  glDeleteTextures(1, &second);
+  if (first != second) GTEST_SKIP() << "this driver does not reuse names";
+  const test::SceneFrame scene("builtin:default", width, height);
+  const auto texture_like_output = [&] { return gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR); };
+  for (const char* post : {"compute", "edges", "single"}) {
+    SCOPED_TRACE(post);
+    RsaaSettings settings;
+    settings.post = post;
+    RsaaPass pass(settings, width, height);
+    scene.render_subsamples(pass);
+    // The output.
+    gl::Texture output = texture_like_output();
+    pass.resolve(scene.frame(), output.get());
+    const Image expected = read_back_image(output.get(), width, height);
+    const GLuint old_name = output.get();
+    output.reset();
+    output = texture_like_output();
+    ASSERT_EQ(output.get(), old_name);
+    pass.resolve(scene.frame(), output.get());
+    const Image again = read_back_image(output.get(), width, height);
+    int differing = 0;
+    for (std::size_t p = 0; p < expected.pixels.size(); ++p) {
+      const Rgb a = expected.pixels[p], b = again.pixels[p];
+      differing += a.r != b.r || a.g != b.g || a.b != b.b;
+    }
+    EXPECT_EQ(differing, 0) << "a new output under the old one's name";
+    // The colour: one frame's, then another texture of one grey under its name.
+    gl::Texture colour = texture_like_output();
+    const float frame_grey[4] = {0.75f, 0.75f, 0.75f, 1.0f}, grey[4] = {0.25f, 0.25f, 0.25f, 1.0f};
+    glClearTexImage(colour.get(), 0, GL_RGBA, GL_FLOAT, frame_grey);
+    RsaaFrame frame = scene.frame();
+    frame.colour = colour.get();
+    pass.resolve(frame, output.get());
+    const GLuint old_colour = colour.get();
+    colour.reset();
+    colour = texture_like_output();
+    ASSERT_EQ(colour.get(), old_colour);
+    glClearTexImage(colour.get(), 0, GL_RGBA, GL_FLOAT, grey);
+    pass.resolve(frame, output.get());
+    const Image resolved = read_back_image(output.get(), width, height);
+    int not_grey = 0;
+    for (const Rgb& p : resolved.pixels) not_grey += p.r != 0.25f || p.g != 0.25f || p.b != 0.25f;
+    EXPECT_EQ(not_grey, 0) << "a new colour under the old one's name";
+  }
+  gl::check("names reused");
 }
 
 }  // namespace
