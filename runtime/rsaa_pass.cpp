@@ -547,7 +547,7 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
     bytes += (n + 3) / 4 * 4 * code_bytes + (cull_ ? 8.0 : 4.0);  // RGBA code texels; depth (+ stencil)
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
   if (settings_.post == "compute") {
-    bytes += 4.0 * (4.0 + double(width_) * height_) / (double(width_) * height_);  // the edge list
+    bytes += double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);  // the edge list
     if (resolves_in_place) bytes += 8.0;                                          // the RGBA16F scratch
   }
   return bytes;
