@@ -834,7 +834,33 @@ void RsaaPass::make_edge_list(std::int64_t capacity) {
 // (rsaa_post_scatter.comp). On a driver that runs a SIMD batch's branches both ways (llvmpipe)
 // the edge pass and depth test of "edges" still run the resolve for whole batches around each
 // edge pixel; here every lane holds one (README, *Cheaper post-processes*).
+// Image stores into an incomplete texture are invalid (GL 4.5 section 8.26), and a texture made
+// with glTexImage2D keeps the default mipmap minifying filter: with one level it is incomplete.
+// Mesa stores all the same; a stricter driver would drop the resolved pixels. While the pass
+// stores into an engine texture, its minifying filter is one that needs no mipmaps; put back after.
+class CompleteForImageStores {
+ public:
+  explicit CompleteForImageStores(GLuint texture) : texture_(texture) {
+    if (texture_ == 0) return;
+    glGetTextureParameteriv(texture_, GL_TEXTURE_MIN_FILTER, &min_filter_);
+    if (min_filter_ != GL_NEAREST && min_filter_ != GL_LINEAR)
+      glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  }
+  ~CompleteForImageStores() {
+    if (texture_ != 0 && min_filter_ != GL_NEAREST && min_filter_ != GL_LINEAR)
+      glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, min_filter_);
+  }
+  CompleteForImageStores(const CompleteForImageStores&) = delete;
+  CompleteForImageStores& operator=(const CompleteForImageStores&) = delete;
+
+ private:
+  GLuint texture_;
+  GLint min_filter_ = GL_NEAREST;
+};
+
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
+  const CompleteForImageStores complete_output(output);
+  const CompleteForImageStores complete_mask(settings_.output_mask ? mask_output : 0);
   const gl::SavedComputeState saved({kEdgeListBinding}, {kOutputImageUnit, kMaskImageUnit});
   // The rows listed per round: all of them unless the list cannot hold every pixel (then the
   // list is filled and resolved again for each band of rows).

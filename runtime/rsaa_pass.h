@@ -268,7 +268,10 @@ class RsaaPass {
   // Writes the anti-aliased colour into `output` (RGBA16F, the frame's size), and the mask into
   // `mask_output` (R32UI) when settings.output_mask. Throws std::logic_error before any pre-pass
   // (or after one that did not finish), or for a frame whose normal, primitive or depth texture
-  // is not the last pre-pass's: there are no codes to resolve it with.
+  // is not the last pre-pass's: there are no codes to resolve it with. `output` may be the
+  // frame's colour itself (resolved in place, post "compute" only), but not another texture that
+  // shares its storage (a glTextureView of it): GL cannot tell, and the pass would read pixels it
+  // has already written.
   void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
 
   const SamplePattern& pattern() const { return pattern_; }

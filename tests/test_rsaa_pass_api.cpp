@@ -965,6 +965,10 @@ TEST_F(RsaaPassApi, AnIncompleteOutputWorksAndABaseLevelIsRefused) {
     }();
     pass.resolve(scene.frame(), complete.get());
     pass.resolve(scene.frame(), incomplete.get());
+    // The compute path makes it complete for its image stores only while it stores.
+    GLint min_filter = 0;
+    glGetTextureParameteriv(incomplete.get(), GL_TEXTURE_MIN_FILTER, &min_filter);
+    EXPECT_EQ(min_filter, GL_NEAREST_MIPMAP_LINEAR) << post;
     const Image a = read_back_image(complete.get(), width, height);
     const Image b = read_back_image(incomplete.get(), width, height);
     int differing = 0;
