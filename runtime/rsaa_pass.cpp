@@ -237,16 +237,6 @@ void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSet
                                               : "RsaaFrame::centre_primitive");
   gl::require_texture(frame.centre_depth, GL_DEPTH_COMPONENT32F, width, height,
                       "RsaaFrame::centre_depth");
-  // The one bilinear fetch needs the colour filtered linearly (it is read at scale 1).
-  GLint filter = 0;
-  glGetTextureParameteriv(frame.colour, GL_TEXTURE_MAG_FILTER, &filter);
-  if (filter != GL_LINEAR)
-    throw std::invalid_argument("RsaaFrame::colour must have GL_TEXTURE_MAG_FILTER GL_LINEAR (the resampling "
-                                "fetch is bilinear); it has 0x" + [&] {
-                                  char hex[16];
-                                  std::snprintf(hex, sizeof hex, "%04X", unsigned(filter));
-                                  return std::string(hex);
-                                }());
   // Depth is read in the settings' convention (RsaaSettings::depth): the clip control must be its.
   GLint origin = 0, depth_mode = 0;
   glGetIntegerv(GL_CLIP_ORIGIN, &origin);

@@ -9,7 +9,7 @@
 // in to be current on the calling thread.
 //
 // THE FRAME. The engine renders its 1x frame into four textures of the pass's width x height:
-//   colour            GL_RGBA16F (linear light), GL_LINEAR filtering, clamp to edge
+//   colour            GL_RGBA16F (linear light)
 //   centre_normal     GL_RG16UI: rsaa_encode_normal(geometric normal, view space); 0 = background
 //   centre_primitive  GL_R32UI: primitive id + 1 of the triangle seen (0 = background); the
 //                     pre-pass compares it with u_primitive_base + gl_PrimitiveID + 1. With
@@ -22,7 +22,7 @@
 //   centre_depth      GL_DEPTH_COMPONENT32F, the depth of the same draw
 // rsaa_encode_normal() is in shaders/rsaa_common.glsl (installed in share/rsaa/shaders);
 // RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
-// and resolve() check the four (name, format, size, the colour's linear filter) and throw
+// and resolve() check the four (name, format, size) and throw
 // std::invalid_argument naming the field, so a forgotten or wrong binding is an error, not a
 // wrong image. The pass reads the four through its own sampler objects (the colour bilinear and
 // clamped to the edge, the others nearest): their own wrap modes, minification filters, depth
@@ -233,8 +233,8 @@ class RsaaTargets {
   GlName colour() const;
   // Draws the colour into `colour` (GL_RGBA16F, this size; 0: the targets' own texture again)
   // instead, for a frame resolved in place (RsaaPass::resolve with output == frame.colour): the
-  // frame goes straight into the engine's output, without a copy. The resolve needs it filtered
-  // linearly (GL_TEXTURE_MAG_FILTER GL_LINEAR). Throws std::invalid_argument for another format or size.
+  // frame goes straight into the engine's output, without a copy. Throws std::invalid_argument for
+  // another format or size.
   void use_colour(GlName colour);
 
  private:

@@ -17,15 +17,8 @@ class Rsaa : public Technique {
 
   void render(const GpuScene& scene, const View& view, GLuint output) override {
     // With the compute post-process the frame is drawn into the output and resolved in place (no
-    // copy of the image); the resolve's bilinear fetch needs the output filtered linearly meanwhile.
-    GLint min_filter = GL_LINEAR, mag_filter = GL_LINEAR;
-    if (in_place_) {
-      targets_.use_colour(output);
-      glGetTextureParameteriv(output, GL_TEXTURE_MIN_FILTER, &min_filter);
-      glGetTextureParameteriv(output, GL_TEXTURE_MAG_FILTER, &mag_filter);
-      glTextureParameteri(output, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-      glTextureParameteri(output, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    }
+    // copy of the image).
+    if (in_place_) targets_.use_colour(output);
     timer_.begin("main");
     renderer_.draw_gbuffer(scene, view, targets_);
     timer_.end();
@@ -39,10 +32,6 @@ class Rsaa : public Technique {
     timer_.begin("post-process");
     pass_.resolve(frame, output, mask_output_);
     timer_.end();
-    if (in_place_) {
-      glTextureParameteri(output, GL_TEXTURE_MIN_FILTER, min_filter);
-      glTextureParameteri(output, GL_TEXTURE_MAG_FILTER, mag_filter);
-    }
   }
 
   double bytes_per_pixel() const override {
