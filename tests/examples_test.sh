@@ -34,6 +34,17 @@ if [ "$mode" = package ]; then
     xargs -P2 -I{} sh -c 'echo "#include \"{}\"" | "${CXX:-c++}" -std=c++17 -fsyntax-only -Wall -Wextra -Werror \
       -I"$1" -x c++ - || { echo "examples_test: the installed {} does not compile alone" >&2; exit 255; }' \
       sh "$work/prefix/include/rsaa"
+  # The full build's install (with the rsaa command), moved too: the command loads its own image
+  # module, not the build tree's.
+  cmake --install "$build_dir" --prefix "$work/installed-tools" >/dev/null
+  mv "$work/installed-tools" "$work/prefix-tools"
+  golden=$source_dir/tests/data/examples/01_rsaa.png
+  LD_DEBUG=libs "$work/prefix-tools/bin/rsaa" compare "$golden" "$golden" >/dev/null 2>"$work/rsaa-libs.log"
+  grep -q "calling init: $work/prefix-tools/lib/rsaa/librsaa_oiio" "$work/rsaa-libs.log" || {
+    grep 'calling init: .*rsaa_oiio' "$work/rsaa-libs.log" >&2
+    echo "examples_test: the installed rsaa did not load the image module of its own prefix" >&2
+    exit 1
+  }
   configure+=(-DCMAKE_PREFIX_PATH="$work/prefix")
 else
   configure+=(-DRSAA_SOURCE_DIR="$source_dir")
