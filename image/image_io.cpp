@@ -100,8 +100,16 @@ const OiioCodec& load_codec() {
         "OpenVDB) starts " + std::to_string(kThreadsStartedByTheModule) +
         " threads when it loads and ends the process when it cannot, and the process limit" +
         process_limit_text() + " leaves no room for them; raise the limit (ulimit -u) or end other processes of this user");
+  // The installed module relative to this executable first (an install under another prefix,
+  // or moved, carries its own), then the build's, then the configured install prefix's.
+  std::vector<std::string> paths;
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) paths.push_back((executable.parent_path() / RSAA_OIIO_MODULE_FROM_BINDIR).lexically_normal().string());
+  paths.insert(paths.end(), {RSAA_OIIO_MODULE, RSAA_OIIO_MODULE_INSTALLED});
   std::string tried;
-  for (const char* path : {RSAA_OIIO_MODULE, RSAA_OIIO_MODULE_INSTALLED}) {
+  for (const std::string& name : paths) {
+    const char* path = name.c_str();
     void* module = load_module_ending_clearly(path);
     if (!module) {
       tried += std::string(" ") + ::dlerror() + ";";
