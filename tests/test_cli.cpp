@@ -25,6 +25,9 @@ TEST(Cli, HelpExitsZero) {
   EXPECT_NE(r.output.find("--two-line-weight"), std::string::npos);
   EXPECT_NE(run_rsaa("").exit_code, 0);
   EXPECT_NE(run_rsaa("frobnicate").exit_code, 0);
+  const auto version = run_rsaa("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_NE(version.output.find("rsaa 0."), std::string::npos) << version.output;
 }
 
 TEST(Cli, TrainIsByteIdenticalAcrossThreadCounts) {

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
   // full disk, instead of SIGXFSZ ending the process in the middle of a write.
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"rsaa: Resampling Anti-Aliasing (Reshetov, HPG 2012): table trainer, renderer and tools"};
+  app.set_version_flag("--version", std::string("rsaa ") + RSAA_VERSION);
   app.require_subcommand(1);
   std::map<const CLI::App*, rsaa::cli::Action> actions;
   const auto add = [&](rsaa::cli::Action (*add_command)(CLI::App&)) {
