@@ -46,6 +46,14 @@ if [ "$mode" = package ]; then
     exit 1
   }
   configure+=(-DCMAKE_PREFIX_PATH="$work/prefix")
+  # A component the package does not have is an error at find_package (the examples ask for pass).
+  mkdir -p "$work/no-such-component"
+  printf 'cmake_minimum_required(VERSION 3.16)\nproject(c LANGUAGES CXX)\nfind_package(rsaa REQUIRED COMPONENTS nosuch)\n' \
+    >"$work/no-such-component/CMakeLists.txt"
+  if cmake -S "$work/no-such-component" -B "$work/no-such-component/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+    >"$work/no-such-component.log" 2>&1; then
+    echo "examples_test: find_package(rsaa COMPONENTS nosuch) succeeded" >&2; exit 1
+  fi
 else
   configure+=(-DRSAA_SOURCE_DIR="$source_dir")
 fi
