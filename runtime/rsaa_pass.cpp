@@ -816,6 +816,32 @@ void RsaaPass::make_edge_list(std::int64_t capacity) {
   glNamedBufferStorage(buffer, GLsizeiptr(kListHeadBytes + 4 * list_capacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
+// Image stores into an incomplete texture are invalid (GL 4.5 section 8.26), and a texture made
+// with glTexImage2D keeps the default mipmap minifying filter: with one level it is incomplete.
+// Mesa stores all the same; a stricter driver would drop the resolved pixels. While the pass
+// stores into an engine texture, its minifying filter is one that needs no mipmaps; put back after.
+namespace {
+class CompleteForImageStores {
+ public:
+  explicit CompleteForImageStores(GLuint texture) : texture_(texture) {
+    if (texture_ == 0) return;
+    glGetTextureParameteriv(texture_, GL_TEXTURE_MIN_FILTER, &min_filter_);
+    changed_ = min_filter_ != GL_NEAREST && min_filter_ != GL_LINEAR;
+    if (changed_) glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  }
+  ~CompleteForImageStores() {
+    if (changed_) glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, min_filter_);
+  }
+  CompleteForImageStores(const CompleteForImageStores&) = delete;
+  CompleteForImageStores& operator=(const CompleteForImageStores&) = delete;
+
+ private:
+  GLuint texture_;
+  GLint min_filter_ = GL_NEAREST;
+  bool changed_ = false;
+};
+}  // namespace
+
 // The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
 // list of the pixels whose mask is not all-similar (rsaa_post_classify.comp), its dispatch size
 // (rsaa_post_list_size.comp), then the resolve on the listed pixels only (rsaa_post_resolve.comp,
@@ -824,30 +850,6 @@ void RsaaPass::make_edge_list(std::int64_t capacity) {
 // (rsaa_post_scatter.comp). On a driver that runs a SIMD batch's branches both ways (llvmpipe)
 // the edge pass and depth test of "edges" still run the resolve for whole batches around each
 // edge pixel; here every lane holds one (README, *Cheaper post-processes*).
-// Image stores into an incomplete texture are invalid (GL 4.5 section 8.26), and a texture made
-// with glTexImage2D keeps the default mipmap minifying filter: with one level it is incomplete.
-// Mesa stores all the same; a stricter driver would drop the resolved pixels. While the pass
-// stores into an engine texture, its minifying filter is one that needs no mipmaps; put back after.
-class CompleteForImageStores {
- public:
-  explicit CompleteForImageStores(GLuint texture) : texture_(texture) {
-    if (texture_ == 0) return;
-    glGetTextureParameteriv(texture_, GL_TEXTURE_MIN_FILTER, &min_filter_);
-    if (min_filter_ != GL_NEAREST && min_filter_ != GL_LINEAR)
-      glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  }
-  ~CompleteForImageStores() {
-    if (texture_ != 0 && min_filter_ != GL_NEAREST && min_filter_ != GL_LINEAR)
-      glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, min_filter_);
-  }
-  CompleteForImageStores(const CompleteForImageStores&) = delete;
-  CompleteForImageStores& operator=(const CompleteForImageStores&) = delete;
-
- private:
-  GLuint texture_;
-  GLint min_filter_ = GL_NEAREST;
-};
-
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
   const CompleteForImageStores complete_output(output);
   const CompleteForImageStores complete_mask(settings_.output_mask ? mask_output : 0);
