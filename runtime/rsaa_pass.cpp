@@ -59,6 +59,7 @@ struct RsaaPass::Objects {
   // The compute post-process (RsaaSettings::post "compute"): the classify program lists the edge
   // pixels in `edge_list` (rsaa_post_list.glsl), the resolve program runs on the listed pixels.
   gl::Program classify_program, list_size_program, list_resolve_program;
+  GLint classify_group[3] = {1, 1, 1};  // the classify program's work group size
   gl::Buffer edge_list;
   // Resolving in place (output == the frame's colour): the listed pixels' colours are resolved
   // into `scratch` (made at the first such call), then copied into the colour by `scatter_program`.
@@ -98,6 +99,9 @@ constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, 
 constexpr int kPostUnits = 9;
 // The compute post-process's shader storage binding (the edge list) and image units (output, mask).
 constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
+// The listing pass's image units (RSAA_CODE_IMAGES): the code textures from kFirstCodeImageUnit
+// on, then the centre normal.
+constexpr int kFirstCodeImageUnit = 2;
 // The edge list's head (rsaa_post_list.glsl: three group counts and the pixel count), and the
 // location of rsaa_post_classify.comp's rows.
 constexpr GLint64 kListHeadBytes = 16;
@@ -511,8 +515,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                   std::to_string(width) + "x" + std::to_string(height) + " image needs post edges");
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
                                      "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
-    gl_->classify_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
-                                             post_defines, "RSAA post-process edge list");
+    gl_->classify_program = gl::make_program(
+        {{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
+        post_defines + "#define RSAA_CODE_IMAGES " + std::to_string(kFirstCodeImageUnit) + "\n",
+        "RSAA post-process edge list");
+    glGetProgramiv(gl_->classify_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->classify_group);
     gl_->list_size_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_list_size.comp")}},
                                               post_defines, "RSAA post-process edge list size");
     gl_->scatter_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_scatter.comp")}},
@@ -853,7 +860,11 @@ class CompleteForImageStores {
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
   const CompleteForImageStores complete_output(output);
   const CompleteForImageStores complete_mask(settings_.output_mask ? mask_output : 0);
-  const gl::SavedComputeState saved({kEdgeListBinding}, {kOutputImageUnit, kMaskImageUnit});
+  // The listing pass reads the jittered pre-pass's codes and the centre normal as images.
+  const int code_images = multisample_ ? 0 : int(gl_->codes.size());
+  std::vector<int> image_units = {kOutputImageUnit, kMaskImageUnit};
+  for (int k = 0; k < code_images + (code_images > 0 ? 1 : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  const gl::SavedComputeState saved({kEdgeListBinding}, image_units);
   // The rows listed per round: all of them unless the list cannot hold every pixel (then the
   // list is filled and resolved again for each band of rows).
   const int rows = int(std::min<std::int64_t>(height_, list_capacity_ / width_));
@@ -879,8 +890,15 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
     const GLuint empty_list[4] = {0, 1, 1, 0};
     glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
     glUseProgram(gl_->classify_program.get());
+    for (int k = 0; k < code_images; ++k)
+      glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
+                         GL_READ_ONLY, code_format(settings_.code_bits));
+    if (code_images > 0)
+      glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
+                         GL_RG16UI);
     glUniform2i(kClassifyRowsLocation, first, end);
-    glDispatchCompute(GLuint(width_ + 7) / 8, GLuint(end - first + 7) / 8, 1);
+    const GLint* group = gl_->classify_group;
+    glDispatchCompute(GLuint((width_ + group[0] - 1) / group[0]), GLuint((end - first + group[1] - 1) / group[1]), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(gl_->list_size_program.get());
     glDispatchCompute(1, 1, 1);

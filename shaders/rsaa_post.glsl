@@ -24,6 +24,10 @@
 //                            compare as maximally different, as the pre-pass codes them
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
+//   RSAA_CODE_IMAGES         (optional, RsaaPass's listing pass) rsaa_pixel_has_edge() reads the
+//                            codes of the jittered pre-pass and the centre normal as images, from
+//                            image unit RSAA_CODE_IMAGES on (codes, then the normal): on llvmpipe an
+//                            image load costs less than a texel fetch (README, *Cheaper post-processes*)
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
 //                            table, the code textures (ceil(RSAA_SAMPLE_COUNT / 4) units from
 //                            + 4), the centre primitive at + 8
@@ -59,6 +63,19 @@ layout(binding = RSAA_POST_FIRST_UNIT + 5) uniform usampler2DMS rsaa_codes_ms2;
 #endif
 #else
 layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2D rsaa_codes[RSAA_CODE_TEXTURES];
+#endif
+
+#if defined(RSAA_CODE_IMAGES) && !defined(RSAA_PREPASS_MSAA)
+#if RSAA_CODE_BITS == 8
+#define RSAA_CODE_IMAGE_FORMAT rgba8ui
+#elif RSAA_CODE_BITS == 16
+#define RSAA_CODE_IMAGE_FORMAT rgba16ui
+#else
+#define RSAA_CODE_IMAGE_FORMAT rgba32ui
+#endif
+layout(binding = RSAA_CODE_IMAGES, RSAA_CODE_IMAGE_FORMAT) uniform readonly uimage2D rsaa_code_images[RSAA_CODE_TEXTURES];
+layout(binding = RSAA_CODE_IMAGES + RSAA_CODE_TEXTURES, rg16ui) uniform readonly uimage2D rsaa_centre_normal_image;
+#define RSAA_READS_CODE_IMAGES
 #endif
 
 // The resampling offset of a mask (GL window space) and its representative dissimilar subsample.
@@ -256,7 +273,11 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
 void rsaa_pixel_codes(ivec2 pixel, out uint codes[RSAA_SAMPLE_COUNT]) {
 #ifndef RSAA_PREPASS_MSAA
   uvec4 code_texels[RSAA_CODE_TEXTURES];
+#ifdef RSAA_READS_CODE_IMAGES
+  for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = imageLoad(rsaa_code_images[k], pixel);
+#else
   for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = texelFetch(rsaa_codes[k], pixel, 0);
+#endif
 #endif
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
 #if defined(RSAA_PREPASS_MSAA_UNION)
@@ -317,7 +338,11 @@ bool rsaa_pixel_has_edge(ivec2 pixel) {
   // A code >= 1 decodes alike whatever the centre shows.
   if (largest > 1u && rsaa_decode_similarity(largest, true) > rsaa_threshold) return true;
   if (smallest != 0u) return false;
+#ifdef RSAA_READS_CODE_IMAGES
+  bool centre_is_surface = rsaa_is_surface(imageLoad(rsaa_centre_normal_image, pixel).xy);
+#else
   bool centre_is_surface = rsaa_is_surface(texelFetch(rsaa_post_centre_normal, pixel, 0).xy);
+#endif
   return rsaa_decode_similarity(0u, centre_is_surface) > rsaa_threshold;
 }
 

@@ -4,10 +4,13 @@
 // and rsaa_post_resolve.comp runs on the listed pixels only, every SIMD lane on an edge pixel (the
 // edge pass + depth test of the "edges" post-process skips edge-free SIMD batches, but runs a
 // whole batch for one edge pixel in it). One atomic per listed pixel: a group-wide count in shared
-// memory (three barriers) cost more on llvmpipe, which has no subgroup operations.
+// memory (three barriers) cost more on llvmpipe, which has no subgroup operations. RsaaPass
+// defines RSAA_CODE_IMAGES for it (the codes and the normal read as images); groups of 64 x 4
+// pixels cost less than 8 x 8 on llvmpipe (README, *Cheaper post-processes*).
 #include "rsaa_post.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+// (RsaaPass reads the group size from the program.)
+layout(local_size_x = 64, local_size_y = 4) in;
 
 #include "rsaa_post_list.glsl"
 

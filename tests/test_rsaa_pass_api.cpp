@@ -322,6 +322,8 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   // buffer range at its binding, an indirect-dispatch buffer.
   glBindImageTexture(0, engine_texture.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
   glBindImageTexture(1, engine_texture.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+  // The units the listing pass reads the codes and the normal through (2 to 4 with 8 subsamples).
+  for (GLuint unit : {2u, 3u, 4u}) glBindImageTexture(unit, engine_texture.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, engine_buffer.get(), 64, 128);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, engine_buffer.get());
   const gl::Buffer engine_generic_buffer = [] {
@@ -447,6 +449,15 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(image0_access, GL_READ_ONLY);
   EXPECT_EQ(GLuint(image1), engine_array.get());
   EXPECT_EQ(image1_format, GL_RGBA8);
+  for (GLuint unit : {2u, 3u, 4u}) {
+    GLint name = 0, access = 0, format = 0;
+    glGetIntegeri_v(GL_IMAGE_BINDING_NAME, unit, &name);
+    glGetIntegeri_v(GL_IMAGE_BINDING_ACCESS, unit, &access);
+    glGetIntegeri_v(GL_IMAGE_BINDING_FORMAT, unit, &format);
+    EXPECT_EQ(GLuint(name), engine_texture.get()) << "image unit " << unit;
+    EXPECT_EQ(access, GL_READ_WRITE) << "image unit " << unit;
+    EXPECT_EQ(format, GL_R32UI) << "image unit " << unit;
+  }
   EXPECT_EQ(GLuint(storage), engine_buffer.get());
   EXPECT_EQ(storage_start, 64);
   EXPECT_EQ(storage_size, 128);
@@ -830,7 +841,7 @@ TEST_F(RsaaPassApi, TheColoursFiltersDoNotMatter) {
 // and masks, bit for bit, for the default options and the paper's resolve with each
 // authentication, on scenes with silhouettes, thin parts and many small triangles.
 TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
-  // The fence also at a size that is no multiple of the passes' 8 x 8 groups or SIMD blocks.
+  // The fence also at a size that is no multiple of the passes' work groups or SIMD blocks.
   const struct {
     const char* scene_name;
     int width, height;
@@ -849,7 +860,16 @@ TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
     RsaaSettings depth_4x = RsaaSettings{};
     depth_4x.pattern = "d3d4x", depth_4x.similarity = "depth";
     variants.push_back(depth_4x);
+    // Every code format and count of code textures the listing pass reads as images.
+    RsaaSettings wide_codes = RsaaSettings{}, many_samples = RsaaSettings{};
+    wide_codes.code_bits = 16;
+    many_samples.table = std::make_shared<const OffsetTable>(
+        read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/d3d16x.json"));
+    many_samples.pattern = "", many_samples.code_bits = 32;
+    variants.push_back(wide_codes);
+    variants.push_back(many_samples);
     for (RsaaSettings settings : variants) {
+      int samples = 0;
       std::vector<Image> images;
       std::vector<std::vector<std::uint32_t>> masks;
       // The last: the compute pass without the mask output (its shaders are built without it).
@@ -859,6 +879,7 @@ TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
         settings.post = no_mask ? "compute" : post;
         settings.output_mask = !no_mask;
         RsaaPass pass(settings, width, height);
+        samples = pass.pattern().size();
         scene.render_subsamples(pass);
         const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
         const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
@@ -866,7 +887,7 @@ TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
         images.push_back(read_back_image(output.get(), width, height));
         masks.push_back(no_mask ? masks[0] : read_back_uints(mask.get(), width, height));
       }
-      const std::uint32_t all_similar = (1u << (settings.pattern == "d3d4x" ? 4 : 8)) - 1u;
+      const std::uint32_t all_similar = (1u << samples) - 1u;
       for (std::size_t k = 1; k < posts.size(); ++k) {
         int edges = 0, differing_colour = 0, differing_mask = 0;
         for (std::size_t p = 0; p < masks[0].size(); ++p) {
@@ -877,7 +898,7 @@ TEST_F(RsaaPassApi, TheEdgePassAndTheEdgeListGiveTheSinglePassImageAndMasks) {
         }
         SCOPED_TRACE(std::string(scene_name) + " " + std::to_string(width) + "x" + std::to_string(height) + " " +
                      settings.pattern + " " + settings.similarity + " auth " + std::to_string(settings.auth) + " " +
-                     settings.multi_surface + " post " + posts[k]);
+                     settings.multi_surface + " " + std::to_string(settings.code_bits) + "-bit codes post " + posts[k]);
         EXPECT_GT(edges, 100);  // the comparison covers resolved pixels
         EXPECT_EQ(differing_mask, 0);
         EXPECT_EQ(differing_colour, 0);
