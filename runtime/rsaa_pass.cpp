@@ -27,14 +27,19 @@ struct RsaaTargets::Objects {
 };
 
 struct RsaaPass::Objects {
-  std::vector<gl::Texture> codes;  // jittered: four subsamples per texel (RGBA), ceil(n / 4) textures
+  std::vector<gl::Texture> codes;  // four subsamples per texel (RGBA), ceil(n / 4) textures
   gl::Texture subsample_depth, table;
-  gl::Texture codes_ms, depth_ms;  // multisample pre-pass: sample i = subsample i
+  // Multisample pre-pass: the surface records (RG32UI), depths and, with material edges,
+  // materials (R32UI) of its draw, sample i = subsample i; the record passes turn them into `codes`.
+  gl::Texture records_ms, depth_ms, materials_ms;
   gl::Framebuffer multisample_target;
-  // Union pre-pass (2m subsamples from two m-sample draws): the shifted draw's codes, sample i =
+  // Union pre-pass (2m subsamples from two m-sample draws): the shifted draw's, sample i =
   // subsample m + i of the pixel that contains the point it sees.
-  gl::Texture codes_ms2;
+  gl::Texture records_ms2, depth_ms2, materials_ms2;
   gl::Framebuffer multisample_target2;
+  gl::Program record_list_program, record_codes_program;
+  GLint record_list_group[3] = {1, 1, 1};
+  bool record_images = false;  // the record passes read the records as multisample images
   std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
   // Every texture the pass reads is read through these (the colour bilinear, the others
@@ -102,6 +107,14 @@ constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
 // The listing pass's image units (RSAA_CODE_IMAGES): the code textures from kFirstCodeImageUnit
 // on, then the centre normal.
 constexpr int kFirstCodeImageUnit = 2;
+// The record passes of the multisample pre-pass write the codes through the same image units.
+constexpr GLint kRecordRowsLocation = 0, kRecordWindowLocation = 1;
+// The record passes' six texture units (records, depths and materials of each draw): 0-5, or
+// after the pre-pass's own three when those start below 6.
+constexpr int kRecordUnits = 6;
+int record_first_unit(int prepass_first_unit) {
+  return prepass_first_unit >= kRecordUnits ? 0 : prepass_first_unit + 3;
+}
 // The edge list's head (rsaa_post_list.glsl: three group counts and the pixel count), and the
 // location of rsaa_post_classify.comp's rows.
 constexpr GLint64 kListHeadBytes = 16;
@@ -198,15 +211,6 @@ bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector
     raster.push_back({int(step.x), int(-step.y)});  // R - P in window space (+y up)
   }
   return true;
-}
-
-GLenum single_code_format(int bits) {
-  switch (bits) {
-    case 8: return GL_R8UI;
-    case 16: return GL_R16UI;
-    case 32: return GL_R32UI;
-  }
-  throw std::invalid_argument("RSAA code bits must be 8, 16 or 32, not " + std::to_string(bits));
 }
 
 GLenum code_format(int bits) {
@@ -452,24 +456,29 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                   "-sample integer target at the positions of pattern '" + pattern_.name +
                                   "', nor two " + std::to_string(n / 2) + "-sample draws whose union they are");
   }
+  for (int k = 0; k < (n + 3) / 4; ++k) gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
   if (multisample_) {
     const int m = union_ ? n / 2 : n;
-    const GLenum format = single_code_format(settings.code_bits);
-    gl_->codes_ms = gl::make_texture_2d_multisample(format, width, height, m);
-    gl_->depth_ms = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, m);
-    gl_->multisample_target = gl::make_framebuffer({{gl_->codes_ms.get()}}, {gl_->depth_ms.get()});
-    if (union_) {
-      gl_->codes_ms2 = gl::make_texture_2d_multisample(format, width, height, m);
-      gl_->multisample_target2 = gl::make_framebuffer({{gl_->codes_ms2.get()}}, {gl_->depth_ms.get()});
-    }
+    const auto make_draw_target = [&](gl::Texture& records, gl::Texture& depth, gl::Texture& materials) {
+      records = gl::make_texture_2d_multisample(GL_RG32UI, width, height, m);
+      depth = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, m);
+      std::vector<gl::Attachment> colours = {{records.get()}};
+      if (settings.material_edges) {
+        materials = gl::make_texture_2d_multisample(GL_R32UI, width, height, m);
+        colours.push_back({materials.get()});
+      }
+      return gl::make_framebuffer(colours, {depth.get()});
+    };
+    gl_->multisample_target = make_draw_target(gl_->records_ms, gl_->depth_ms, gl_->materials_ms);
+    if (union_)
+      gl_->multisample_target2 = make_draw_target(gl_->records_ms2, gl_->depth_ms2, gl_->materials_ms2);
   } else {
     gl_->subsample_depth = gl::make_texture_2d(cull_ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F, width, height);
     const gl::Attachment depth{gl_->subsample_depth.get()};
     std::vector<gl::Attachment> all_codes;
-    for (int k = 0; k < (n + 3) / 4; ++k) {
-      gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
-      gl_->subsample_targets.push_back(gl::make_framebuffer({{gl_->codes.back().get()}}, depth));
-      all_codes.push_back({gl_->codes.back().get()});
+    for (const gl::Texture& codes : gl_->codes) {
+      gl_->subsample_targets.push_back(gl::make_framebuffer({{codes.get()}}, depth));
+      all_codes.push_back({codes.get()});
     }
     if (cull_) gl_->cull_target = gl::make_framebuffer(all_codes, depth);
   }
@@ -508,29 +517,69 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                          "RSAA post-process edge pass");
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
   }
+  // The compute post-process and the multisample pre-pass's record passes list pixels (one list
+  // buffer, used by each in turn). The list packs a pixel's x and y into 16 bits each.
+  if ((settings.post == "compute" || multisample_) && (width > 65536 || height > 65536))
+    throw std::invalid_argument("RSAA " + std::string(multisample_ ? "prepass msaa" : "post compute") +
+                                ": the pixel list packs coordinates into 16 bits; a " + std::to_string(width) + "x" +
+                                std::to_string(height) + " image needs " +
+                                (multisample_ ? "the jittered pre-pass" : "post edges"));
+  const std::string list_defines = "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
+  if (settings.post == "compute" || multisample_) {
+    gl_->list_size_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_list_size.comp")}},
+                                              defines + list_defines, "RSAA pixel list size");
+    // Every pixel of the image, or as many rows as the driver's storage block holds (8192 x 4096
+    // on llvmpipe's 128 MiB was refused: the passes then list and resolve in rounds of rows).
+    GLint64 max_block = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
+  }
+  if (multisample_) {
+    const int record_unit = record_first_unit(settings.prepass_first_unit);
+    GLint compute_units = 0;
+    glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &compute_units);
+    if (std::max(record_unit + kRecordUnits - 1, settings.prepass_first_unit + 2) >= compute_units)
+      throw std::invalid_argument("RSAA prepass msaa: its compute passes need texture units " +
+                                  std::to_string(settings.prepass_first_unit) + " to +2 and " +
+                                  std::to_string(record_unit) + " to +" + std::to_string(kRecordUnits - 1) +
+                                  ", this driver has " +
+                                  std::to_string(compute_units) + " compute texture units (lower prepass_first_unit)");
+    std::string record_defines = defines + list_defines + "#define RSAA_RECORD_FIRST_UNIT " +
+                                 std::to_string(record_unit) + "\n#define RSAA_RECORD_CODE_IMAGES " +
+                                 std::to_string(kFirstCodeImageUnit) + "\n";
+    // The records as images where the driver loads multisample images of that many samples.
+    GLint image_samples = 0, image_units = 0;
+    glGetIntegerv(GL_MAX_IMAGE_SAMPLES, &image_samples);
+    glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_units);
+    const int code_images = (n + 3) / 4;
+    gl_->record_images = image_samples >= (union_ ? n / 2 : n) && kFirstCodeImageUnit + code_images + 4 <= image_units;
+    if (gl_->record_images)
+      record_defines += "#define RSAA_RECORD_IMAGES " + std::to_string(kFirstCodeImageUnit + code_images) + "\n";
+    gl_->record_list_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_prepass_list.comp")}},
+                                                record_defines, "RSAA pre-pass record list");
+    glGetProgramiv(gl_->record_list_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->record_list_group);
+    gl_->record_codes_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_prepass_codes.comp")}},
+                                                 record_defines, "RSAA pre-pass record codes");
+    // Where each subsample's point lies in its pixel (window space, from the lower-left corner).
+    std::vector<float> windows;
+    for (const Vec2& position : pattern_.positions) {
+      const Vec2 gl = pixel_to_gl(position);
+      windows.push_back(float(0.5 + gl.x)), windows.push_back(float(0.5 + gl.y));
+    }
+    glProgramUniform2fv(gl_->record_codes_program.get(), kRecordWindowLocation, n, windows.data());
+  }
   if (settings.post == "compute") {
-    // The list packs a pixel's x and y into 16 bits each.
-    if (width > 65536 || height > 65536)
-      throw std::invalid_argument("RSAA post compute: the edge list packs pixel coordinates into 16 bits; a " +
-                                  std::to_string(width) + "x" + std::to_string(height) + " image needs post edges");
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
-                                     "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
+                                     list_defines;
     gl_->classify_program = gl::make_program(
         {{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
         post_defines + "#define RSAA_CODE_IMAGES " + std::to_string(kFirstCodeImageUnit) + "\n",
         "RSAA post-process edge list");
     glGetProgramiv(gl_->classify_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->classify_group);
-    gl_->list_size_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_list_size.comp")}},
-                                              post_defines, "RSAA post-process edge list size");
     gl_->scatter_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_scatter.comp")}},
                                             post_defines, "RSAA post-process in place");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
                                                  post_defines, "RSAA post-process resolve of the edge list");
-    // Every pixel of the image, or as many rows as the driver's storage block holds (8192 x 4096
-    // on llvmpipe's 128 MiB was refused: resolve_edge_list() then lists and resolves in rounds).
-    GLint64 max_block = 0;
-    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
   }
   gl::check("creating the RSAA pass");
 }
@@ -538,15 +587,16 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   const int n = pattern_.size();
   const double code_bytes = settings_.code_bits / 8.0;
   double bytes = 0.0;
+  bytes += (n + 3) / 4 * 4 * code_bytes;  // RGBA code texels
   if (multisample_)
-    bytes += n * (code_bytes + 4.0);  // a code and a 32-bit depth a sample (both draws of a union)
+    // a surface record, a 32-bit depth and (material edges) a material a sample, both draws of a union
+    bytes += n * (8.0 + 4.0 + (settings_.material_edges ? 4.0 : 0.0));
   else
-    bytes += (n + 3) / 4 * 4 * code_bytes + (cull_ ? 8.0 : 4.0);  // RGBA code texels; depth (+ stencil)
+    bytes += cull_ ? 8.0 : 4.0;  // the draws' depth (+ stencil)
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
-  if (settings_.post == "compute") {
-    bytes += double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);  // the edge list
-    if (resolves_in_place) bytes += 8.0;                                          // the RGBA16F scratch
-  }
+  if (list_capacity_ > 0)
+    bytes += double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);  // the pixel list
+  if (settings_.post == "compute" && resolves_in_place) bytes += 8.0;  // the RGBA16F scratch
   return bytes;
 }
 
@@ -560,8 +610,6 @@ std::string RsaaPass::prepass_glsl() const {
 }
 
 std::vector<GlName> RsaaPass::code_textures() const {
-  if (union_) return {gl_->codes_ms.get(), gl_->codes_ms2.get()};
-  if (multisample_) return {gl_->codes_ms.get()};
   std::vector<GlName> names;
   for (const gl::Texture& t : gl_->codes) names.push_back(t.get());
   return names;
@@ -575,6 +623,60 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
   head.subsample = -1;
   glNamedBufferSubData(gl_->uniforms.get(), 0, sizeof head, &head);
   glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings_.uniform_binding), gl_->uniforms.get());
+}
+
+// The multisample pre-pass's record passes (shaders/rsaa_prepass_records.glsl): the codes of every
+// pixel from the records and depths of its draws, the similarities computed for the listed pixels
+// only (a sample on another triangle than the centre's). Called by run_prepass() with the frame's
+// centre textures and the uniform block bound.
+void RsaaPass::codes_from_records() {
+  const int record_unit = record_first_unit(settings_.prepass_first_unit);
+  const int code_images = int(gl_->codes.size());
+  std::vector<int> image_units, units;
+  for (int k = 0; k < code_images + (gl_->record_images ? 4 : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  for (int k = 0; k < kRecordUnits; ++k) units.push_back(record_unit + k);
+  const gl::SavedState saved(units);
+  const gl::SavedComputeState saved_compute({kEdgeListBinding}, image_units);
+  const GLuint records[kRecordUnits] = {gl_->records_ms.get(),   gl_->depth_ms.get(),     gl_->records_ms2.get(),
+                                        gl_->depth_ms2.get(),    gl_->materials_ms.get(), gl_->materials_ms2.get()};
+  glBindTextures(GLuint(record_unit), kRecordUnits, records);
+  const std::vector<GLuint> samplers(kRecordUnits, gl_->nearest.get());
+  glBindSamplers(GLuint(record_unit), kRecordUnits, samplers.data());
+  for (int k = 0; k < code_images; ++k)
+    glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
+                       GL_WRITE_ONLY, code_format(settings_.code_bits));
+  if (gl_->record_images)
+    for (int d = 0; d < (union_ ? 2 : 1); ++d) {
+      glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + d), records[2 * d], 0, GL_FALSE, 0, GL_READ_ONLY,
+                         GL_RG32UI);
+      if (settings_.material_edges)
+        glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + 2 + d), records[4 + d], 0, GL_FALSE, 0,
+                           GL_READ_ONLY, GL_R32UI);
+    }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
+  // Rounds of rows when the list cannot hold every pixel, as the compute post-process does.
+  const int rows = int(std::min<std::int64_t>(height_, list_capacity_ / width_));
+  for (int first = 0; first < height_; first += rows) {
+    const int end = std::min(first + rows, height_);
+    const GLuint empty_list[4] = {0, 1, 1, 0};
+    glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
+    glUseProgram(gl_->record_list_program.get());
+    glUniform2i(kRecordRowsLocation, first, end);
+    const GLint* group = gl_->record_list_group;
+    glDispatchCompute(GLuint((width_ + group[0] - 1) / group[0]), GLuint((end - first + group[1] - 1) / group[1]), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glUseProgram(gl_->list_size_program.get());
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glUseProgram(gl_->record_codes_program.get());
+    glDispatchComputeIndirect(0);
+    // The next round rewrites the list this one read; the codes pass stored over the list pass's.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+  // The post-process (or the engine's) reads the codes next, as images or textures.
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw) {
@@ -604,16 +706,18 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
         {jitter.x, jitter.y}, settings_.threshold, subsample, {float(sample_shift.x), float(sample_shift.y)}};
     glNamedBufferSubData(gl_->uniforms.get(), kJitterOffset, sizeof per_draw, &per_draw);
   };
-  if (multisample_) {  // one draw (two for a union), the fragment shader run once per covered sample
+  if (multisample_) {  // one draw (two for a union), the fragment shader run once per pixel
     for (int d = 0; d < (union_ ? 2 : 1); ++d) {
+      // Records to 0 (no surface: rsaa_prepass.glsl); the materials are read only where a record is.
       const GLuint fb = (d == 0 ? gl_->multisample_target : gl_->multisample_target2).get();
       glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
       glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
       glBindFramebuffer(GL_FRAMEBUFFER, fb);
       glViewport(0, 0, frame.width, frame.height);
       set_depth_state();
-      glEnable(GL_SAMPLE_SHADING);
-      glMinSampleShading(1.0f);
+      // A record is the triangle's, whichever sample: shading once per pixel writes it to every
+      // covered sample (the depth buffer holds each sample's own depth).
+      glDisable(GL_SAMPLE_SHADING);
       // The shifted draw: the image moves by -shift, so that raster sample i sees the point at
       // its position + shift.
       const Vec2 shift = d == 0 ? Vec2{0.0, 0.0} : union_shift_;
@@ -621,6 +725,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       write_per_draw(jitter, d == 0 ? 0 : pattern_.size() / 2, pixel_to_gl(shift));
       draw(-1, jitter);
     }
+    codes_from_records();
     gl::check("RSAA pre-pass (multisample)");
     codes_ready_ = true;
     return;
@@ -760,8 +865,6 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   glBindTextureUnit(kNormalUnit, frame.centre_normal);
   glBindTextureUnit(kDepthUnit, frame.centre_depth);
   glBindTextureUnit(kTableUnit, gl_->table.get());
-  if (multisample_) glBindTextureUnit(kFirstCodeUnit, gl_->codes_ms.get());
-  if (union_) glBindTextureUnit(kFirstCodeUnit + 1, gl_->codes_ms2.get());
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
   if (settings_.material_edges) glBindTextureUnit(kPrimitiveUnit, frame.centre_primitive);
   if (settings_.post == "compute") {
@@ -861,9 +964,9 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   const CompleteForImageStores complete_output(output);
   const CompleteForImageStores complete_mask(settings_.output_mask ? mask_output : 0);
   // The listing pass reads the jittered pre-pass's codes and the centre normal as images.
-  const int code_images = multisample_ ? 0 : int(gl_->codes.size());
+  const int code_images = int(gl_->codes.size());
   std::vector<int> image_units = {kOutputImageUnit, kMaskImageUnit};
-  for (int k = 0; k < code_images + (code_images > 0 ? 1 : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  for (int k = 0; k <= code_images; ++k) image_units.push_back(kFirstCodeImageUnit + k);
   const gl::SavedComputeState saved({kEdgeListBinding}, image_units);
   // The rows listed per round: all of them unless the list cannot hold every pixel (then the
   // list is filled and resolved again for each band of rows).
@@ -893,9 +996,8 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
     for (int k = 0; k < code_images; ++k)
       glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
                          GL_READ_ONLY, code_format(settings_.code_bits));
-    if (code_images > 0)
-      glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
-                         GL_RG16UI);
+    glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
+                       GL_RG16UI);
     glUniform2i(kClassifyRowsLocation, first, end);
     const GLint* group = gl_->classify_group;
     glDispatchCompute(GLuint((width_ + group[0] - 1) / group[0]), GLuint((end - first + group[1] - 1) / group[1]), 1);

@@ -298,6 +298,8 @@ class RsaaPass {
   void clear_to_all_similar(GlName mask_output) const;
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
+  // The multisample pre-pass's codes from its records (shaders/rsaa_prepass_records.glsl).
+  void codes_from_records();
   RsaaSettings settings_;
   SamplePattern pattern_;
   bool multisample_ = false;

@@ -8,10 +8,6 @@
 //
 // Defines expected before inclusion (rsaa_shader_defines() in runtime/rsaa_pass.h writes them):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (1 = post-pass authentication), RSAA_CODE_BITS, the similarity
-//   RSAA_PREPASS_MSAA        (optional) codes are the samples of one multisample texture
-//   RSAA_PREPASS_MSAA_UNION  (optional, with RSAA_MS_SAMPLES m) codes of a union pattern: samples
-//                            0..m-1 in the first multisample texture, the shifted draw's in a
-//                            second one, read at the raster pixel rsaa_neighbours[i].zw away
 //   RSAA_SPLIT_CAP           (optional) cap of the k-means split, x threshold (rsaa_common.glsl)
 //   RSAA_MULTI_SURFACE_NEIGHBOURS  (optional) pixels whose dissimilar subsamples point at two
 //                            different surfaces: a sample average from the neighbours (below)
@@ -25,7 +21,7 @@
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
 //   RSAA_CODE_IMAGES         (optional, RsaaPass's listing pass) rsaa_pixel_has_edge() reads the
-//                            codes of the jittered pre-pass and the centre normal as images, from
+//                            codes and the centre normal as images, from
 //                            image unit RSAA_CODE_IMAGES on (codes, then the normal): on llvmpipe an
 //                            image load costs less than a texel fetch (README, *Cheaper post-processes*)
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
@@ -36,7 +32,7 @@
 // The table texture (RGBA32F, min(masks, 256) x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
 // offset in GL window space (+y up) and the mask's representative dissimilar subsample (post-pass
 // authentication). Codes arrive packed, four subsamples per RGBA texel: subsample i is channel
-// i % 4 of code texture i / 4; or, from the multisample pre-pass, sample i of one texture.
+// i % 4 of code texture i / 4, from either pre-pass (the multisample one packs them so too).
 #ifndef RSAA_POST_GLSL
 #define RSAA_POST_GLSL
 
@@ -56,16 +52,9 @@ layout(binding = RSAA_POST_FIRST_UNIT + 2) uniform sampler2D rsaa_post_centre_de
 #ifndef RSAA_TABLE_ARRAY
 layout(binding = RSAA_POST_FIRST_UNIT + 3) uniform sampler2D rsaa_table;
 #endif
-#ifdef RSAA_PREPASS_MSAA
-layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2DMS rsaa_codes_ms;
-#ifdef RSAA_PREPASS_MSAA_UNION
-layout(binding = RSAA_POST_FIRST_UNIT + 5) uniform usampler2DMS rsaa_codes_ms2;
-#endif
-#else
 layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2D rsaa_codes[RSAA_CODE_TEXTURES];
-#endif
 
-#if defined(RSAA_CODE_IMAGES) && !defined(RSAA_PREPASS_MSAA)
+#ifdef RSAA_CODE_IMAGES
 #if RSAA_CODE_BITS == 8
 #define RSAA_CODE_IMAGE_FORMAT rgba8ui
 #elif RSAA_CODE_BITS == 16
@@ -271,31 +260,13 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
 
 // The pixel's similarity codes, subsample i in codes[i].
 void rsaa_pixel_codes(ivec2 pixel, out uint codes[RSAA_SAMPLE_COUNT]) {
-#ifndef RSAA_PREPASS_MSAA
   uvec4 code_texels[RSAA_CODE_TEXTURES];
 #ifdef RSAA_READS_CODE_IMAGES
   for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = imageLoad(rsaa_code_images[k], pixel);
 #else
   for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) code_texels[k] = texelFetch(rsaa_codes[k], pixel, 0);
 #endif
-#endif
-  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
-#if defined(RSAA_PREPASS_MSAA_UNION)
-    if (i < RSAA_MS_SAMPLES) {
-      codes[i] = texelFetch(rsaa_codes_ms, pixel, i).x;
-    } else {
-      // The raster pixel whose shifted sample saw subsample i; outside the image (one column and
-      // one row at the edge, by the shift's direction) the shifted draw has no code: similar.
-      ivec2 r = pixel + rsaa_neighbours[i].zw;
-      bool inside = all(greaterThanEqual(r, ivec2(0))) && all(lessThan(r, ivec2(rsaa_viewport)));
-      codes[i] = inside ? texelFetch(rsaa_codes_ms2, r, i - RSAA_MS_SAMPLES).x : 1u;
-    }
-#elif defined(RSAA_PREPASS_MSAA)
-    codes[i] = texelFetch(rsaa_codes_ms, pixel, i).x;
-#else
-    codes[i] = code_texels[i / 4][i % 4];
-#endif
-  }
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) codes[i] = code_texels[i / 4][i % 4];
 }
 
 // The pixel's similarity mask (paper section 2.2) from its subsamples' codes, with the decoded

@@ -7,13 +7,19 @@
 //                   o_code = rsaa_prepass_code(view_position, view_face_normal, primitive);
 //
 // rsaa_jitter() shifts the image so that the subsample being drawn lands on the pixel centre (the
-// jittered pre-pass, one draw per subsample); in the multisample pre-pass (RSAA_PREPASS_MSAA: one
-// draw, or two for a union pattern, the fragment shader run per sample) it applies the second
-// union draw's shift. There rsaa_prepass_code() ignores view_position and rebuilds the sample's
-// point from its window position and depth (gl_FragCoord.z), as the centre's is: Mesa llvmpipe's
+// jittered pre-pass, one draw per subsample, each fragment writing its subsample's similarity
+// code); in the multisample pre-pass (RSAA_PREPASS_MSAA: one draw, or two for a union pattern,
+// into multisample targets, the fragment shader run once per pixel) it applies the second union
+// draw's shift, and rsaa_prepass_code() returns the triangle's surface record (primitive,
+// material, face normal) without reading anything: the pass then turns records and the samples'
+// depths into the same codes with two compute passes (rsaa_prepass_records.glsl), computing
+// similarities only for pixels with a sample on another triangle than the centre's. Each sample's
+// point is rebuilt from its window position and depth, as the centre's is: Mesa llvmpipe's
 // perspective-correct interpolation at a sample (interpolateAtSample/AtOffset, per-sample inputs)
 // slides the point along the view ray (relative depth error up to 0.17 on a detailed model),
-// which made points of one surface look dissimilar.
+// which made points of one surface look dissimilar. On llvmpipe, which runs every branch of a
+// shader for a whole SIMD batch, the jittered draws pay the similarity for every fragment; the
+// multisample pre-pass pays a record write (README, *The multisample pre-pass*).
 //
 // Defines expected before inclusion (RsaaPass::prepass_glsl() writes them for a pass):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (0, 1, 2), RSAA_CODE_BITS, the similarity (rsaa_common.glsl)
@@ -25,6 +31,8 @@
 //                              primitive, centre depth
 //   RSAA_UNIFORM_BINDING       (13) the uniform block (rsaa_uniforms.glsl)
 //   RSAA_INCLUDE_FS            (1) 0 in the vertex stage: only rsaa_jitter() is declared
+//   RSAA_PREPASS_COMPUTE       (optional) included by a compute shader (the pass's record passes):
+//                              no fragment-stage functions
 #ifndef RSAA_PREPASS_GLSL
 #define RSAA_PREPASS_GLSL
 
@@ -50,56 +58,42 @@ layout(binding = RSAA_PREPASS_FIRST_UNIT + 2) uniform sampler2D rsaa_centre_dept
 // The geometric normal of the triangle being drawn, from the derivatives of the view-space
 // position, for an engine without a geometry stage that computes it. Its sign is arbitrary
 // (similarity measures use |n . r|).
+#ifndef RSAA_PREPASS_COMPUTE
 vec3 rsaa_face_normal(vec3 view_position) {
   vec3 n = cross(dFdx(view_position), dFdy(view_position));
   float len = length(n);
   return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
 }
+#endif
 
 vec3 rsaa_centre_position(ivec2 pixel) {
   return rsaa_view_position(vec2(pixel) + 0.5, texelFetch(rsaa_centre_depth, pixel, 0).x,
                             rsaa_inverse_projection, rsaa_viewport);
 }
 
-// The compressed similarity code of the subsample being shaded: how different the surface it sees
-// (view-space position and geometric normal) is from the surface at the pixel centre. `primitive`
-// is the value the engine wrote into the centre primitive target for this triangle (id + 1): when
-// equal, the subsample is on the centre's triangle and the test is skipped; 0 never skips it.
-// All four channels carry the code: the pass masks the ones of other subsamples.
-// With RSAA_MATERIAL_EDGES `material` is the value the engine wrote into the centre primitive
-// target's second channel for this draw: a subsample on another material than the centre's is
-// maximally different, so that colour edges between coplanar parts (a painted band on a wall, a
-// decal, a window in its frame), which no geometric similarity sees, are resampled.
-#ifdef RSAA_MATERIAL_EDGES
-uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive, uint material) {
-#else
-uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive) {
-#endif
-#ifdef RSAA_PREPASS_MSAA
-  // The point this sample sees (window space) and the pixel that contains it: the sample's own
-  // pixel, but for the shifted second draw of a union pattern.
-  vec2 window = floor(gl_FragCoord.xy) + gl_SamplePosition + rsaa_sample_shift;
-  ivec2 pixel = ivec2(floor(window));
-  if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, ivec2(rsaa_viewport))))
-    return uvec4(1u);  // a point outside the image: no pixel reads it
-  view_position = rsaa_view_position(window, gl_FragCoord.z, rsaa_inverse_projection, rsaa_viewport);
-  int subsample = rsaa_subsample + gl_SampleID;
-#else
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  int subsample = rsaa_subsample;
-#endif
+// The compressed similarity code of subsample `subsample` of `pixel`: how different the surface
+// it sees (view-space position and geometric normal) is from the surface at the pixel centre.
+// `primitive` is the value the engine wrote into the centre primitive target for that triangle
+// (id + 1): when equal, the subsample is on the centre's triangle and the test is skipped; 0 never
+// skips it. With RSAA_MATERIAL_EDGES `material` is the value the engine wrote into the centre
+// primitive target's second channel for that draw (else ignored): a subsample on another material
+// than the centre's is maximally different, so that colour edges between coplanar parts (a
+// painted band on a wall, a decal, a window in its frame), which no geometric similarity sees,
+// are resampled.
+uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 view_face_normal, uint primitive,
+                         uint material) {
   uvec2 centre_primitive = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
 #ifdef RSAA_MATERIAL_EDGES
   // Primitive ids repeated across draws must not hide a material edge: both must match.
-  if (primitive != 0u && centre_primitive == uvec2(primitive, material)) return uvec4(1u);  // decodes to 0
+  if (primitive != 0u && centre_primitive == uvec2(primitive, material)) return 1u;  // decodes to 0
 #else
-  if (primitive != 0u && centre_primitive.x == primitive) return uvec4(1u);  // decodes to 0
+  if (primitive != 0u && centre_primitive.x == primitive) return 1u;  // decodes to 0
 #endif
   uvec2 centre_normal = texelFetch(rsaa_centre_normal, pixel, 0).xy;
   // A surface subsample in a background pixel: different.
-  if (!rsaa_is_surface(centre_normal)) return uvec4(RSAA_CODE_MAX);
+  if (!rsaa_is_surface(centre_normal)) return RSAA_CODE_MAX;
 #ifdef RSAA_MATERIAL_EDGES
-  if (centre_primitive.y != material) return uvec4(RSAA_CODE_MAX);
+  if (centre_primitive.y != material) return RSAA_CODE_MAX;
 #endif
   float similarity = rsaa_similarity(view_position, view_face_normal, rsaa_centre_position(pixel),
                                      rsaa_decode_normal(centre_normal));
@@ -120,8 +114,60 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
     }
   }
 #endif
-  return uvec4(rsaa_encode_similarity(similarity));
+  return rsaa_encode_similarity(similarity);
 }
+
+// ---- the multisample pre-pass's surface records (RSAA_PREPASS_MSAA): what a sample sees,
+// written once per pixel for every covered sample (the fragment shader runs once per pixel, as
+// in any MSAA G-buffer pass; the depth buffer holds each sample's own depth), then turned into
+// codes by the pass (rsaa_prepass_records.glsl). Two 32-bit words, so that the draw writes and
+// the pass reads 8 bytes a sample (a 16-byte record cost the draw half as much again on
+// llvmpipe): x the primitive, y the face normal as the centre's is stored (rsaa_encode_normal,
+// 2 x 16 bits, its sign flipped to z >= 0: the similarity measures use |n . r| only). y = 0: no
+// surface covers the sample (the records are cleared to 0; an encoded normal is never 0);
+// y = 1: a NaN normal (compares as similar, as in the jittered pre-pass). With
+// RSAA_MATERIAL_EDGES the material goes to a second target (location 1), written by
+// rsaa_prepass_code() itself, so that the engine's fragment stage is the same in every mode.
+uvec2 rsaa_surface_record(vec3 view_face_normal, uint primitive) {
+  vec3 n = view_face_normal.z < 0.0 ? -view_face_normal : view_face_normal;
+  if (any(isnan(n))) return uvec2(primitive, 1u);
+  uvec2 q = rsaa_encode_normal(vec3(clamp(n.xy, -1.0, 1.0), n.z));
+  return uvec2(primitive, q.x | (q.y << 16u));
+}
+
+bool rsaa_record_is_surface(uvec2 record) { return record.y != 0u; }
+
+vec3 rsaa_record_normal(uvec2 record) {
+  if (record.y == 1u) return vec3(uintBitsToFloat(0x7fc00000u));
+  return rsaa_decode_normal(uvec2(record.y & 0xffffu, record.y >> 16u));
+}
+
+#if defined(RSAA_PREPASS_MSAA) && defined(RSAA_MATERIAL_EDGES) && !defined(RSAA_PREPASS_COMPUTE)
+layout(location = 1) out uint rsaa_material_record;
+#endif
+
+#ifndef RSAA_PREPASS_COMPUTE
+// What the engine's fragment stage writes (to location 0, a uvec4 output): jittered, the code of
+// the subsample this draw samples (all four channels carry it: the pass masks the ones of other
+// subsamples); multisample, the surface record of the samples the fragment covers (.xy; with
+// material edges the material goes to location 1 meanwhile).
+#ifdef RSAA_MATERIAL_EDGES
+uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive, uint material) {
+#else
+uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive) {
+  const uint material = 0u;
+#endif
+#ifdef RSAA_PREPASS_MSAA
+#ifdef RSAA_MATERIAL_EDGES
+  rsaa_material_record = material;
+#endif
+  return uvec4(rsaa_surface_record(view_face_normal, primitive), 0u, 0u);
+#else
+  return uvec4(rsaa_subsample_code(ivec2(gl_FragCoord.xy), rsaa_subsample, view_position, view_face_normal, primitive,
+                                   material));
+#endif
+}
+#endif  // RSAA_PREPASS_COMPUTE
 #endif  // RSAA_INCLUDE_FS
 
 #endif  // RSAA_PREPASS_GLSL

@@ -1,0 +1,27 @@
+// The multisample pre-pass's second record pass (rsaa_prepass_records.glsl): every code of each
+// pixel rsaa_prepass_list.comp listed, as the jittered pre-pass computes it.
+#include "rsaa_prepass_records.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+  uint index = rsaa_list_index();
+  if (index >= rsaa_list_count) return;
+  uint entry = rsaa_list_pixels[index];
+  ivec2 pixel = ivec2(entry & 0xffffu, entry >> 16u);
+  uint codes[RSAA_SAMPLE_COUNT];
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    ivec2 raster;
+    int sample_index;
+    codes[i] = 1u;
+    if (!rsaa_record_at(pixel, i, raster, sample_index)) continue;
+    uvec2 record = rsaa_record(i, raster, sample_index);
+    float depth = rsaa_record_depth(i, raster, sample_index);
+    vec3 point = rsaa_view_position(vec2(pixel) + rsaa_subsample_window[i], depth, rsaa_inverse_projection,
+                                    rsaa_viewport);
+    codes[i] = !rsaa_record_is_surface(record) ? 0u
+                                       : rsaa_subsample_code(pixel, i, point, rsaa_record_normal(record), record.x,
+                                                             rsaa_record_material(i, raster, sample_index));
+  }
+  rsaa_store_codes(pixel, codes);
+}

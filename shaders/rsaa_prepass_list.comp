@@ -1,0 +1,34 @@
+// The multisample pre-pass's first record pass (rsaa_prepass_records.glsl): per pixel, the codes
+// its records tell alone, and the pixel listed when a sample lies on another triangle than the
+// centre's (or another material, with material edges).
+#include "rsaa_prepass_records.glsl"
+
+// (RsaaPass reads the group size from the program.)
+layout(local_size_x = 64, local_size_y = 4) in;
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, rsaa_rows.x);
+  if (pixel.x >= int(rsaa_viewport.x) || pixel.y >= rsaa_rows.y) return;
+  uvec2 centre = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+  uint codes[RSAA_SAMPLE_COUNT];
+  bool listed = false;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    ivec2 raster;
+    int sample_index;
+    codes[i] = 1u;
+    if (!rsaa_record_at(pixel, i, raster, sample_index)) continue;
+    uvec2 record = rsaa_record(i, raster, sample_index);
+#ifdef RSAA_MATERIAL_EDGES
+    bool centres_triangle =
+        record.x != 0u && uvec2(record.x, rsaa_record_material(i, raster, sample_index)) == centre;
+#else
+    bool centres_triangle = record.x != 0u && record.x == centre.x;
+#endif
+    if (!rsaa_record_is_surface(record)) codes[i] = 0u;
+    else if (!centres_triangle) listed = true;
+  }
+  rsaa_store_codes(pixel, codes);
+  if (!listed) return;
+  uint slot = atomicAdd(rsaa_list_count, 1u);
+  rsaa_list_pixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16u);
+}

@@ -1,0 +1,128 @@
+// The multisample pre-pass's second half (RsaaPass, RsaaSettings::prepass "msaa"): the surface
+// records and depths of one multisample draw (two for a union pattern) turned into the similarity
+// codes the jittered pre-pass writes, packed the same way (subsample i in channel i % 4 of code
+// image i / 4), so that the post-process reads one layout. Two compute passes:
+//   rsaa_prepass_list.comp   every pixel: the codes the records tell alone (a sample on the
+//                            centre's triangle: 1; no surface: 0) and, for a pixel with a sample
+//                            on another triangle, an entry in the list (rsaa_post_list.glsl)
+//   rsaa_prepass_codes.comp  each listed pixel: every code, rsaa_subsample_code() of the jittered
+//                            pre-pass on the point the sample's depth gives
+// On a driver that runs every branch for a whole SIMD batch (llvmpipe) the similarity is paid for
+// the listed pixels only.
+//
+// Defines expected before inclusion, beside rsaa_prepass.glsl's:
+//   RSAA_PREPASS_MSAA, RSAA_PREPASS_MSAA_UNION + RSAA_MS_SAMPLES (a union pattern)
+//   RSAA_RECORD_FIRST_UNIT   texture units: records, depths, (union) the shifted draw's, then
+//                            with RSAA_MATERIAL_EDGES the materials of each draw (+ 4, + 5)
+//   RSAA_RECORD_CODE_IMAGES  first image unit of the code images (ceil(RSAA_SAMPLE_COUNT / 4))
+//   RSAA_RECORD_IMAGES       (optional) first image unit of the records, then (+ 2) the
+//                            materials, read as multisample images (one per draw; where the
+//                            driver's GL_MAX_IMAGE_SAMPLES and image units allow: on llvmpipe an
+//                            image load costs less than a texel fetch)
+//   RSAA_LIST_BINDING        the list's storage buffer (rsaa_post_list.glsl)
+#ifndef RSAA_PREPASS_RECORDS_GLSL
+#define RSAA_PREPASS_RECORDS_GLSL
+
+#define RSAA_PREPASS_COMPUTE
+#include "rsaa_prepass.glsl"
+
+#ifndef RSAA_PREPASS_MSAA
+#error "the record passes are the multisample pre-pass's: define RSAA_PREPASS_MSAA"
+#endif
+#define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
+#if RSAA_CODE_BITS == 8
+#define RSAA_CODE_IMAGE_FORMAT rgba8ui
+#elif RSAA_CODE_BITS == 16
+#define RSAA_CODE_IMAGE_FORMAT rgba16ui
+#else
+#define RSAA_CODE_IMAGE_FORMAT rgba32ui
+#endif
+
+layout(binding = RSAA_RECORD_FIRST_UNIT) uniform usampler2DMS rsaa_records;
+layout(binding = RSAA_RECORD_FIRST_UNIT + 1) uniform sampler2DMS rsaa_record_depths;
+#ifdef RSAA_PREPASS_MSAA_UNION
+layout(binding = RSAA_RECORD_FIRST_UNIT + 2) uniform usampler2DMS rsaa_records2;
+layout(binding = RSAA_RECORD_FIRST_UNIT + 3) uniform sampler2DMS rsaa_record_depths2;
+#endif
+#ifdef RSAA_RECORD_IMAGES
+layout(binding = RSAA_RECORD_IMAGES, rg32ui) uniform readonly uimage2DMS rsaa_record_images[2];
+#ifdef RSAA_MATERIAL_EDGES
+layout(binding = RSAA_RECORD_IMAGES + 2, r32ui) uniform readonly uimage2DMS rsaa_material_images[2];
+#endif
+#endif
+#ifdef RSAA_MATERIAL_EDGES
+layout(binding = RSAA_RECORD_FIRST_UNIT + 4) uniform usampler2DMS rsaa_record_materials;
+#ifdef RSAA_PREPASS_MSAA_UNION
+layout(binding = RSAA_RECORD_FIRST_UNIT + 5) uniform usampler2DMS rsaa_record_materials2;
+#endif
+#endif
+#ifndef RSAA_PREPASS_MSAA_UNION
+#define RSAA_MS_SAMPLES RSAA_SAMPLE_COUNT
+#endif
+layout(binding = RSAA_RECORD_CODE_IMAGES, RSAA_CODE_IMAGE_FORMAT) uniform writeonly uimage2D
+    rsaa_code_images[RSAA_CODE_TEXTURES];
+
+// The rows [x, y) this dispatch covers (RsaaPass runs bands of rows when the list cannot hold
+// every pixel).
+layout(location = 0) uniform ivec2 rsaa_rows;
+// Per subsample, the window-space position of the point it sees relative to its pixel's
+// lower-left corner (0.5 + its pattern position, +y up).
+layout(location = 1) uniform vec2 rsaa_subsample_window[RSAA_SAMPLE_COUNT];
+
+#include "rsaa_post_list.glsl"
+
+// The raster pixel and sample whose record is subsample i of `pixel`: the pixel itself for the
+// first draw's samples, rsaa_neighbours[i].zw away for the shifted draw's; false outside the
+// image (one column and one row at the border, by the shift's direction), where the subsample
+// counts as the centre's surface (code 1), as no pixel reads it.
+bool rsaa_record_at(ivec2 pixel, int i, out ivec2 raster, out int sample_index) {
+  raster = pixel, sample_index = i;
+#ifdef RSAA_PREPASS_MSAA_UNION
+  if (i >= RSAA_MS_SAMPLES) {
+    raster = pixel + rsaa_neighbours[i].zw, sample_index = i - RSAA_MS_SAMPLES;
+    return all(greaterThanEqual(raster, ivec2(0))) && all(lessThan(raster, ivec2(rsaa_viewport)));
+  }
+#endif
+  return true;
+}
+
+uvec2 rsaa_record(int i, ivec2 raster, int sample_index) {
+#ifdef RSAA_RECORD_IMAGES
+  return imageLoad(rsaa_record_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).xy;
+#else
+#ifdef RSAA_PREPASS_MSAA_UNION
+  if (i >= RSAA_MS_SAMPLES) return texelFetch(rsaa_records2, raster, sample_index).xy;
+#endif
+  return texelFetch(rsaa_records, raster, sample_index).xy;
+#endif
+}
+
+uint rsaa_record_material(int i, ivec2 raster, int sample_index) {
+#if defined(RSAA_MATERIAL_EDGES) && defined(RSAA_RECORD_IMAGES)
+  return imageLoad(rsaa_material_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).x;
+#elif defined(RSAA_MATERIAL_EDGES)
+#ifdef RSAA_PREPASS_MSAA_UNION
+  if (i >= RSAA_MS_SAMPLES) return texelFetch(rsaa_record_materials2, raster, sample_index).x;
+#endif
+  return texelFetch(rsaa_record_materials, raster, sample_index).x;
+#else
+  return 0u;
+#endif
+}
+
+float rsaa_record_depth(int i, ivec2 raster, int sample_index) {
+#ifdef RSAA_PREPASS_MSAA_UNION
+  if (i >= RSAA_MS_SAMPLES) return texelFetch(rsaa_record_depths2, raster, sample_index).x;
+#endif
+  return texelFetch(rsaa_record_depths, raster, sample_index).x;
+}
+
+void rsaa_store_codes(ivec2 pixel, uint codes[RSAA_SAMPLE_COUNT]) {
+  for (int k = 0; k < RSAA_CODE_TEXTURES; ++k) {
+    uvec4 texel = uvec4(0u);
+    for (int c = 0; c < 4 && 4 * k + c < RSAA_SAMPLE_COUNT; ++c) texel[c] = codes[4 * k + c];
+    imageStore(rsaa_code_images[k], pixel, texel);
+  }
+}
+
+#endif  // RSAA_PREPASS_RECORDS_GLSL
