@@ -169,6 +169,15 @@ gl::Texture table_texture(const OffsetTable& table) {
   return texture;
 }
 
+// Whether a multisample texture of `samples` samples gets that many (a driver may round a count
+// up to one it has: its positions are then another pattern's).
+bool driver_has_sample_count(int samples) {
+  const gl::Texture texture = gl::make_texture_2d_multisample(GL_RG32UI, 1, 1, samples);
+  GLint actual = 0;
+  glGetTextureLevelParameteriv(texture.get(), 0, GL_TEXTURE_SAMPLES, &actual);
+  return actual == samples;
+}
+
 // Whether the driver can run the pre-pass as one multisample draw for `pattern`: it offers that
 // many samples for integer targets, and its positions for that count are the pattern's.
 bool driver_samples_pattern(const SamplePattern& pattern) {
@@ -176,7 +185,7 @@ bool driver_samples_pattern(const SamplePattern& pattern) {
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
   const int n = pattern.size();
-  if (n < 2 || n > max_samples || n > max_integer_samples) return false;
+  if (n < 2 || n > max_samples || n > max_integer_samples || !driver_has_sample_count(n)) return false;
   const SamplePattern driver = query_gl_sample_pattern(n);
   for (int i = 0; i < n; ++i)
     if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
@@ -193,7 +202,7 @@ bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
   const int n = pattern.size(), m = n / 2;
-  if (n % 2 != 0 || m < 2 || m > max_samples || m > max_integer_samples) return false;
+  if (n % 2 != 0 || m < 2 || m > max_samples || m > max_integer_samples || !driver_has_sample_count(m)) return false;
   const SamplePattern driver = query_gl_sample_pattern(m);
   for (int i = 0; i < m; ++i)
     if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
@@ -440,18 +449,22 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   const int n = pattern_.size();
   if (settings.post != "edges" && settings.post != "single" && settings.post != "compute")
     throw std::invalid_argument("RSAA post '" + settings.post + "' is not one of edges, compute, single");
-  if (settings.prepass != "jittered" && settings.prepass != "msaa")
-    throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of jittered, msaa");
+  if (settings.prepass != "auto" && settings.prepass != "jittered" && settings.prepass != "msaa")
+    throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of auto, jittered, msaa");
   if (settings.prepass_cull != "off" && settings.prepass_cull != "neighbours")
     throw std::invalid_argument("RSAA prepass_cull '" + settings.prepass_cull + "' is not one of off, neighbours");
   cull_ = settings.prepass_cull == "neighbours";
-  if (cull_ && settings.prepass != "jittered")
+  if (cull_ && settings.prepass == "msaa")
     throw std::invalid_argument("RSAA prepass_cull neighbours needs the jittered pre-pass, not '" + settings.prepass + "'");
-  multisample_ = settings.prepass == "msaa" && driver_samples_pattern(pattern_);
+  // "auto": the multisample pre-pass where the driver samples the pattern (and its pixel list can
+  // address the image), else the jittered one.
+  const bool may_multisample =
+      settings.prepass == "msaa" || (settings.prepass == "auto" && !cull_ && width <= 65536 && height <= 65536);
+  multisample_ = may_multisample && driver_samples_pattern(pattern_);
   std::vector<glm::ivec2> union_raster;
-  if (settings.prepass == "msaa" && !multisample_) {
+  if (may_multisample && !multisample_) {
     multisample_ = union_ = driver_samples_union(pattern_, union_shift_, union_raster);
-    if (!multisample_)
+    if (!multisample_ && settings.prepass == "msaa")
       throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
                                   "-sample integer target at the positions of pattern '" + pattern_.name +
                                   "', nor two " + std::to_string(n / 2) + "-sample draws whose union they are");
@@ -544,29 +557,12 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                   std::to_string(record_unit) + " to +" + std::to_string(kRecordUnits - 1) +
                                   ", this driver has " +
                                   std::to_string(compute_units) + " compute texture units (lower prepass_first_unit)");
-    std::string record_defines = defines + list_defines + "#define RSAA_RECORD_FIRST_UNIT " +
-                                 std::to_string(record_unit) + "\n#define RSAA_RECORD_CODE_IMAGES " +
-                                 std::to_string(kFirstCodeImageUnit) + "\n";
     // The records as images where the driver loads multisample images of that many samples.
     GLint image_samples = 0, image_units = 0;
     glGetIntegerv(GL_MAX_IMAGE_SAMPLES, &image_samples);
     glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_units);
-    const int code_images = (n + 3) / 4;
-    gl_->record_images = image_samples >= (union_ ? n / 2 : n) && kFirstCodeImageUnit + code_images + 4 <= image_units;
-    if (gl_->record_images)
-      record_defines += "#define RSAA_RECORD_IMAGES " + std::to_string(kFirstCodeImageUnit + code_images) + "\n";
-    gl_->record_list_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_prepass_list.comp")}},
-                                                record_defines, "RSAA pre-pass record list");
-    glGetProgramiv(gl_->record_list_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->record_list_group);
-    gl_->record_codes_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_prepass_codes.comp")}},
-                                                 record_defines, "RSAA pre-pass record codes");
-    // Where each subsample's point lies in its pixel (window space, from the lower-left corner).
-    std::vector<float> windows;
-    for (const Vec2& position : pattern_.positions) {
-      const Vec2 gl = pixel_to_gl(position);
-      windows.push_back(float(0.5 + gl.x)), windows.push_back(float(0.5 + gl.y));
-    }
-    glProgramUniform2fv(gl_->record_codes_program.get(), kRecordWindowLocation, n, windows.data());
+    make_record_programs(image_samples >= (union_ ? n / 2 : n) &&
+                         kFirstCodeImageUnit + int(gl_->codes.size()) + 4 <= image_units);
   }
   if (settings.post == "compute") {
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
@@ -623,6 +619,31 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
   head.subsample = -1;
   glNamedBufferSubData(gl_->uniforms.get(), 0, sizeof head, &head);
   glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(settings_.uniform_binding), gl_->uniforms.get());
+}
+
+// The record passes' programs, reading the records as images or (a driver without multisample
+// image loads of that many samples) as textures.
+void RsaaPass::make_record_programs(bool record_images) {
+  const int n = pattern_.size();
+  std::string defines = rsaa_shader_defines(settings_, n, multisample_, union_) + "#define RSAA_LIST_BINDING " +
+                        std::to_string(kEdgeListBinding) + "\n#define RSAA_RECORD_FIRST_UNIT " +
+                        std::to_string(record_first_unit(settings_.prepass_first_unit)) +
+                        "\n#define RSAA_RECORD_CODE_IMAGES " + std::to_string(kFirstCodeImageUnit) + "\n";
+  gl_->record_images = record_images;
+  if (record_images)
+    defines += "#define RSAA_RECORD_IMAGES " + std::to_string(kFirstCodeImageUnit + int(gl_->codes.size())) + "\n";
+  gl_->record_list_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_prepass_list.comp")}},
+                                              defines, "RSAA pre-pass record list");
+  glGetProgramiv(gl_->record_list_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->record_list_group);
+  gl_->record_codes_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_prepass_codes.comp")}},
+                                               defines, "RSAA pre-pass record codes");
+  // Where each subsample's point lies in its pixel (window space, from the lower-left corner).
+  std::vector<float> windows;
+  for (const Vec2& position : pattern_.positions) {
+    const Vec2 gl = pixel_to_gl(position);
+    windows.push_back(float(0.5 + gl.x)), windows.push_back(float(0.5 + gl.y));
+  }
+  glProgramUniform2fv(gl_->record_codes_program.get(), kRecordWindowLocation, n, windows.data());
 }
 
 // The multisample pre-pass's record passes (shaders/rsaa_prepass_records.glsl): the codes of every

@@ -157,16 +157,20 @@ struct RsaaSettings {
   // by default (no scene measured loses, README "Material edges").
   bool material_edges = false;
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
-  // with the image shifted so that it lands on the pixel centre (any pattern, any driver); "msaa"
-  // draws once into a multisample target with per-sample shading, which needs the driver's
-  // sample positions for that count to be the table's (gl4x on Mesa llvmpipe; d3d8x on GPUs whose
-  // 8x is the standard pattern), or, for a table of 2m subsamples that are the driver's m
-  // positions and the same shifted by one sub-pixel offset (a union pattern, such as
-  // tables/custom-gl4x-union.json), twice into m-sample targets, the second draw shifted;
-  // refused where the driver can do neither. Its masks equal the jittered pre-pass's
-  // (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's outermost
-  // pixels); on llvmpipe it is slower (per-sample shading), so it is not the default.
-  std::string prepass = "jittered";
+  // with the image shifted so that it lands on the pixel centre (any pattern, any driver), each
+  // fragment computing its subsample's code; "msaa" draws once into multisample targets, the
+  // fragment shader run once per pixel writing the triangle's surface record, and two compute
+  // passes then compute the codes (similarities only where a sample lies on another triangle than
+  // the centre's). "msaa" needs the driver's sample positions for that count to be the table's
+  // (gl4x on Mesa llvmpipe; d3d8x on GPUs whose 8x is the standard pattern), or, for a table of
+  // 2m subsamples that are the driver's m positions and the same shifted by one sub-pixel offset
+  // (a union pattern, such as tables/custom-gl4x-union.json), draws twice into m-sample targets,
+  // the second shifted; refused where the driver can do neither. Its masks equal the jittered
+  // pre-pass's (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's
+  // outermost pixels) at a third of its cost for 4 subsamples on llvmpipe (README, *The
+  // multisample pre-pass*). "auto" (default): "msaa" where the driver can, else "jittered" (and
+  // "jittered" with prepass_cull).
+  std::string prepass = "auto";
   // Culling of the jittered pre-pass (ours): "off" draws every subsample for every pixel (the
   // paper); "neighbours" first marks, once per frame, the pixels whose 3x3 neighbourhood of
   // centres (centre_primitive) shows another triangle or background, and the per-subsample draws
@@ -298,8 +302,11 @@ class RsaaPass {
   void clear_to_all_similar(GlName mask_output) const;
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
-  // The multisample pre-pass's codes from its records (shaders/rsaa_prepass_records.glsl).
+  // The multisample pre-pass's codes from its records (shaders/rsaa_prepass_records.glsl), and
+  // the programs that make them (records read as images, or as textures where the driver lacks
+  // multisample image loads).
   void codes_from_records();
+  void make_record_programs(bool record_images);
   RsaaSettings settings_;
   SamplePattern pattern_;
   bool multisample_ = false;

@@ -24,7 +24,7 @@ struct TechniqueOptions {
   std::string pattern;               // rsaa 4x: gl4x (default) | d3d4x
   int code_bits = 8;                 // rsaa: 8 | 16 | 32 bits per stored similarity
   std::string table;                 // rsaa: an offset table file (JSON); empty: the built-in one
-  std::string prepass = "jittered";  // rsaa: jittered | msaa (RsaaSettings::prepass)
+  std::string prepass = "auto";      // rsaa: auto | jittered | msaa (RsaaSettings::prepass)
   std::string prepass_cull = "off";  // rsaa: off | neighbours (RsaaSettings::prepass_cull)
   double split_cap = 1.5;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
   std::string multi_surface = "neighbours";  // rsaa: neighbours (default) | fetch (the paper's)

@@ -1,7 +1,8 @@
-// The multisample pre-pass (one 4x MSAA draw, per-sample shading, gl4x) against the jittered
-// one (a draw per subsample): the same pattern and table must give the same masks. Where they
-// differ the cause is a float tie (a code one step either side of the threshold, or a subsample
-// snapped to the other side of an edge by the jittered draw), not a different surface.
+// The multisample pre-pass (one 4x MSAA draw writing surface records, then the record passes,
+// gl4x) against the jittered one (a draw per subsample): the same pattern and table must give
+// the same masks. Where they differ the cause is a float tie (a code one step either side of the
+// threshold, or a subsample snapped to the other side of an edge by the jittered draw), not a
+// different surface.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -148,6 +149,18 @@ TEST_F(PrePassCull, NeedsTheJitteredPrePass) {
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnDefaultScene) { expect_same_masks("builtin:default"); }
 
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnEdgesScene) { expect_same_masks("builtin:edges"); }
+
+// Material edges (the renderer's default): the multisample pre-pass writes each sample's material
+// to a second target beside its record. The coplanar scene's parts differ by material only.
+TEST_F(MsaaPrePass, SameMasksAsJitteredWithMaterialEdges) {
+  for (const char* scene : {"builtin:coplanar", "builtin:default"}) {
+    RsaaSettings settings;
+    settings.material_edges = true;
+    const MaskComparison c = compare_prepasses(scene, settings);
+    EXPECT_GT(c.edges_jittered, 1000u) << scene;
+    EXPECT_EQ(c.differing, 0u) << scene;
+  }
+}
 
 // A detailed model: before the fix (the sample's point from interpolateAtSample) the multisample
 // pre-pass found 30,013 edge pixels on it at 640x480 against the jittered pass's 9,849; skipped

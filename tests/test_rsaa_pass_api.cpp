@@ -1155,6 +1155,8 @@ namespace rsaa {
 // The pass's internals a test reaches (RsaaPass's friend).
 struct RsaaPassTesting {
   static void set_edge_list_capacity(RsaaPass& pass, std::int64_t pixels) { pass.make_edge_list(pixels); }
+  // The multisample pre-pass's record passes as on a driver without multisample image loads.
+  static void read_records_as_textures(RsaaPass& pass) { pass.make_record_programs(false); }
 };
 
 namespace {
@@ -1282,6 +1284,63 @@ TEST_F(RsaaPassApiReusedNames, ATextureMadeUnderADeletedOnesNameIsTheOneResolved
     EXPECT_EQ(not_grey, 0) << "a new colour under the old one's name";
   }
   gl::check("names reused");
+}
+
+}  // namespace
+}  // namespace rsaa
+
+namespace rsaa {
+namespace {
+
+// Every code texture of a pass, as bytes (RGBA8UI: 8-bit codes).
+std::vector<std::uint8_t> read_back_codes(const RsaaPass& pass, int width, int height) {
+  std::vector<std::uint8_t> all;
+  for (const GlName texture : pass.code_textures()) {
+    std::vector<std::uint8_t> texels(std::size_t(width) * height * 4);
+    glGetTextureImage(texture, 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, GLsizei(texels.size()), texels.data());
+    all.insert(all.end(), texels.begin(), texels.end());
+  }
+  return all;
+}
+
+// The multisample pre-pass's record passes give the same codes, byte for byte, whether they read
+// the records as multisample images (where the driver loads them) or as textures (the fallback),
+// and in rounds of rows when the pixel list cannot hold every pixel; with and without material
+// edges, for one 4x draw and for the union pattern's two.
+TEST_F(RsaaPassApi, TheMultisamplePrePassCodesDoNotDependOnHowItReadsItsRecords) {
+  constexpr int width = 163, height = 117;
+  const auto union_table = std::make_shared<const OffsetTable>(
+      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-union.json"));
+  for (const bool material_edges : {false, true}) {
+    const test::SceneFrame scene("builtin:coplanar", width, height, material_edges);
+    for (const bool union_pattern : {false, true}) {
+      RsaaSettings settings;
+      settings.prepass = "msaa", settings.material_edges = material_edges;
+      if (union_pattern)
+        settings.table = union_table, settings.pattern = "";
+      else
+        settings.pattern = "gl4x";
+      SCOPED_TRACE(std::string(union_pattern ? "union" : "gl4x") + (material_edges ? ", material edges" : ""));
+      RsaaPass images(settings, width, height);
+      ASSERT_TRUE(images.multisample_prepass());
+      scene.render_subsamples(images);
+      const std::vector<std::uint8_t> expected = read_back_codes(images, width, height);
+      std::size_t not_one = 0;
+      for (const std::uint8_t code : expected) not_one += code != 1;
+      EXPECT_GT(not_one, 1000u);  // codes other than "the centre's triangle": the passes computed them
+      RsaaPass textures(settings, width, height);
+      RsaaPassTesting::read_records_as_textures(textures);
+      scene.render_subsamples(textures);
+      EXPECT_EQ(read_back_codes(textures, width, height), expected);
+      for (const std::int64_t capacity : {std::int64_t(width) * 5 + 1, std::int64_t(1)}) {
+        RsaaPass rounds(settings, width, height);
+        RsaaPassTesting::set_edge_list_capacity(rounds, capacity);
+        scene.render_subsamples(rounds);
+        EXPECT_EQ(read_back_codes(rounds, width, height), expected) << "list of " << capacity << " pixels";
+      }
+    }
+  }
+  gl::check("record passes");
 }
 
 }  // namespace

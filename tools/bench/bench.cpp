@@ -68,10 +68,11 @@ std::vector<TechniqueOptions> default_techniques() {
   list.push_back(technique_options("agaa", 8));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
   for (const TechniqueOptions& o : rsaa_defaults()) list.push_back(o);
-  // RSAA 4x with the one-draw multisample pre-pass, beside the jittered one (same masks).
-  TechniqueOptions multisample = technique_options("rsaa", 4);
-  multisample.prepass = "msaa";
-  list.push_back(multisample);
+  // RSAA 4x with the jittered pre-pass (a draw per subsample), beside the default, which is the
+  // one-draw multisample pre-pass where the driver samples gl4x (same masks).
+  TechniqueOptions jittered = technique_options("rsaa", 4);
+  jittered.prepass = "jittered";
+  list.push_back(jittered);
   list.push_back(rsaa_default_without_extensions());
   // The defaults' post-process in one pass over every pixel, beside the two-pass one (same image).
   TechniqueOptions single_pass = technique_options("rsaa", 8);

@@ -18,7 +18,7 @@ namespace rsaa::cli {
 namespace {
 
 struct BenchArgs {
-  std::string scenes, techniques, table, table_prepass = "jittered";
+  std::string scenes, techniques, table, table_prepass = "auto";
   int width = 640, height = 480;
   int frames = 5, orbit_frames = 4;
   bool quick = false;
@@ -130,10 +130,12 @@ int run_bench_command(BenchArgs a) {
   if (!a.scenes.empty()) o.scenes = split(a.scenes);
   if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
   if (!a.table.empty()) {  // RSAA with the user's table, beside the built-in ones
-    if (a.table_prepass != "jittered" && a.table_prepass != "msaa" && a.table_prepass != "both")
-      throw std::invalid_argument("--table-prepass must be jittered, msaa or both, not '" + a.table_prepass + "'");
-    for (const char* prepass : {"jittered", "msaa"}) {
-      if (a.table_prepass != "both" && a.table_prepass != prepass) continue;
+    if (a.table_prepass != "auto" && a.table_prepass != "jittered" && a.table_prepass != "msaa" &&
+        a.table_prepass != "both")
+      throw std::invalid_argument("--table-prepass must be auto, jittered, msaa or both, not '" + a.table_prepass + "'");
+    for (const char* prepass : {"auto", "jittered", "msaa"}) {
+      const bool both = a.table_prepass == "both" && std::string(prepass) != "auto";
+      if (!both && a.table_prepass != prepass) continue;
       TechniqueOptions t = technique_options("rsaa");
       t.table = a.table;
       t.prepass = prepass;
@@ -200,8 +202,9 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--table", args->table,
                   "Also bench RSAA (default options) with this offset table file (JSON), e.g. a scene-specific one");
   cmd->add_option("--table-prepass", args->table_prepass,
-                  "Pre-pass of the --table row: jittered, msaa (one multisample draw, or two for a union "
-                  "pattern such as tables/custom-gl4x-union.json) or both (two rows)")
+                  "Pre-pass of the --table row: auto (msaa where the driver can), jittered, msaa (one "
+                  "multisample draw, or two for a union pattern such as tables/custom-gl4x-union.json) or both "
+                  "(a jittered and an msaa row)")
       ->capture_default_str();
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();
   cmd->add_option("--height", args->height, "Image height")->capture_default_str();

@@ -137,6 +137,7 @@ Action add_shaders_command(CLI::App& app) {
                   "zero-to-one (GL_ZERO_TO_ONE) | reverse-z (GL_ZERO_TO_ONE, nearer is greater)")
       ->capture_default_str()
       ->check(CLI::IsMember({"gl", "zero-to-one", "reverse-z"}));
+  s.prepass = "jittered";  // files for one configuration: the engine picks what its driver can do
   cmd->add_option("--prepass", s.prepass, "jittered (one draw per subsample) | msaa (one multisample draw)")
       ->capture_default_str()
       ->check(CLI::IsMember({"jittered", "msaa"}));
