@@ -108,7 +108,7 @@ constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
 // on, then the centre normal.
 constexpr int kFirstCodeImageUnit = 2;
 // The record passes of the multisample pre-pass write the codes through the same image units.
-constexpr GLint kRecordRowsLocation = 0, kRecordWindowLocation = 1;
+constexpr GLint kRecordRowsLocation = 0;
 // The record passes' six texture units (records, depths and materials of each draw): 0-5, or
 // after the pre-pass's own three when those start below 6.
 constexpr int kRecordUnits = 6;
@@ -423,6 +423,20 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
 
 std::string rsaa_shader_file(const std::string& name) { return gl::shader_source(name); }
 
+std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_record_unit, int first_code_image,
+                                     int list_binding) {
+  std::string windows;
+  for (const Vec2& position : pattern.positions) {  // window space, from the pixel's lower-left corner
+    const Vec2 gl = pixel_to_gl(position);
+    char entry[96];
+    std::snprintf(entry, sizeof entry, "%svec2(%.9g, %.9g)", windows.empty() ? "" : ", ", 0.5 + gl.x, 0.5 + gl.y);
+    windows += entry;
+  }
+  return "#define RSAA_LIST_BINDING " + std::to_string(list_binding) + "\n#define RSAA_RECORD_FIRST_UNIT " +
+         std::to_string(first_record_unit) + "\n#define RSAA_RECORD_CODE_IMAGES " + std::to_string(first_code_image) +
+         "\n#define RSAA_SUBSAMPLE_WINDOWS vec2[](" + windows + ")\n";
+}
+
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     : settings_(settings), width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   gl::check_none_pending("RsaaPass::RsaaPass");
@@ -624,11 +638,9 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
 // The record passes' programs, reading the records as images or (a driver without multisample
 // image loads of that many samples) as textures.
 void RsaaPass::make_record_programs(bool record_images) {
-  const int n = pattern_.size();
-  std::string defines = rsaa_shader_defines(settings_, n, multisample_, union_) + "#define RSAA_LIST_BINDING " +
-                        std::to_string(kEdgeListBinding) + "\n#define RSAA_RECORD_FIRST_UNIT " +
-                        std::to_string(record_first_unit(settings_.prepass_first_unit)) +
-                        "\n#define RSAA_RECORD_CODE_IMAGES " + std::to_string(kFirstCodeImageUnit) + "\n";
+  std::string defines = rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_) +
+                        rsaa_record_pass_defines(pattern_, record_first_unit(settings_.prepass_first_unit),
+                                                 kFirstCodeImageUnit, kEdgeListBinding);
   gl_->record_images = record_images;
   if (record_images)
     defines += "#define RSAA_RECORD_IMAGES " + std::to_string(kFirstCodeImageUnit + int(gl_->codes.size())) + "\n";
@@ -637,13 +649,6 @@ void RsaaPass::make_record_programs(bool record_images) {
   glGetProgramiv(gl_->record_list_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->record_list_group);
   gl_->record_codes_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_prepass_codes.comp")}},
                                                defines, "RSAA pre-pass record codes");
-  // Where each subsample's point lies in its pixel (window space, from the lower-left corner).
-  std::vector<float> windows;
-  for (const Vec2& position : pattern_.positions) {
-    const Vec2 gl = pixel_to_gl(position);
-    windows.push_back(float(0.5 + gl.x)), windows.push_back(float(0.5 + gl.y));
-  }
-  glProgramUniform2fv(gl_->record_codes_program.get(), kRecordWindowLocation, n, windows.data());
 }
 
 // The multisample pre-pass's record passes (shaders/rsaa_prepass_records.glsl): the codes of every

@@ -204,6 +204,13 @@ struct RsaaSettings {
 // two draws of half the samples, see RsaaSettings::prepass). Needs no GL.
 std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
                                 bool union_pattern = false);
+// The #define lines the multisample pre-pass's record passes (shaders/rsaa_prepass_list.comp,
+// rsaa_prepass_codes.comp) need beside rsaa_shader_defines(): their resources (texture units from
+// `first_record_unit`: records, depths, the union's second draw's, then materials; code images
+// from `first_code_image`; the pixel list at storage binding `list_binding`) and where each
+// subsample's point lies in its pixel. Needs no GL.
+std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_record_unit, int first_code_image,
+                                     int list_binding);
 // A file of shaders/ ("rsaa_prepass.glsl", "rsaa_post.glsl", "rsaa_post.hlsl", ...) with its
 // #include lines replaced by the included text: one self-contained text. Needs no GL.
 std::string rsaa_shader_file(const std::string& name);

@@ -20,6 +20,10 @@
 //                            driver's GL_MAX_IMAGE_SAMPLES and image units allow: on llvmpipe an
 //                            image load costs less than a texel fetch)
 //   RSAA_LIST_BINDING        the list's storage buffer (rsaa_post_list.glsl)
+//   RSAA_SUBSAMPLE_WINDOWS   vec2[](...): per subsample, its point in the pixel, window space from
+//                            the lower-left corner (0.5 + its pattern position, +y up)
+// (rsaa_record_pass_defines() in runtime/rsaa_pass.h writes these.) Uniform: rsaa_rows (location
+// 0), the rows [x, y) a dispatch covers.
 #ifndef RSAA_PREPASS_RECORDS_GLSL
 #define RSAA_PREPASS_RECORDS_GLSL
 
@@ -67,7 +71,7 @@ layout(binding = RSAA_RECORD_CODE_IMAGES, RSAA_CODE_IMAGE_FORMAT) uniform writeo
 layout(location = 0) uniform ivec2 rsaa_rows;
 // Per subsample, the window-space position of the point it sees relative to its pixel's
 // lower-left corner (0.5 + its pattern position, +y up).
-layout(location = 1) uniform vec2 rsaa_subsample_window[RSAA_SAMPLE_COUNT];
+const vec2 rsaa_subsample_window[RSAA_SAMPLE_COUNT] = RSAA_SUBSAMPLE_WINDOWS;
 
 #include "rsaa_post_list.glsl"
 

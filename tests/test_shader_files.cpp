@@ -339,6 +339,32 @@ TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
   EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
 }
 
+// With the multisample pre-pass the files include its record passes (which turn the draw's
+// records into the codes the post-process reads, as RsaaPass does) and the HLSL post-process (one
+// code layout for both pre-passes); every file compiles, material edges on and off.
+TEST(GeneratedShaders, TheMultisamplePrePassFilesIncludeItsRecordPasses) {
+  for (const char* material_edges : {"off", "on"}) {
+    test::TempDir dir;
+    const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --pattern gl4x --prepass msaa" +
+                                  " --material-edges " + material_edges);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const char* name : {"rsaa_prepass_list.comp", "rsaa_prepass_codes.comp", "rsaa_post_list_size.comp"}) {
+      const std::string text = test::read_text(dir.file(std::string("out/") + name));
+      EXPECT_NE(text.find("#define RSAA_PREPASS_MSAA\n"), std::string::npos) << name;
+      EXPECT_NE(text.find("#define RSAA_SUBSAMPLE_WINDOWS vec2[]("), std::string::npos) << name;
+      EXPECT_EQ(glslang_errors("comp", text), "") << name << ", material edges " << material_edges;
+    }
+    EXPECT_EQ(glslang_errors("frag", "#version 450\n" + test::read_text(dir.file("out/rsaa_prepass.glsl")) +
+                                         "layout(location = 0) out uvec4 o;\n"
+                                         "void main() { o = rsaa_prepass_code(vec3(1.0), vec3(0.0, 0.0, 1.0), 1u" +
+                                         (std::string(material_edges) == "on" ? ", 3u" : "") + "); }\n"),
+              "");
+    const auto hlsl = test::run_command("glslangValidator -D -V -S frag -e RsaaPostPS -o " + dir.file("p.spv") + " " +
+                                        dir.file("out/rsaa_post.hlsl"));
+    EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
+  }
+}
+
 // The options beyond the paper reach all three files (and the paper's files have none of them).
 TEST(GeneratedShaders, TheOptionsBeyondThePaperReachEveryFile) {
   test::TempDir dir;

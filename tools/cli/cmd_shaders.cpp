@@ -65,7 +65,24 @@ int run_shaders(ShadersArgs a) {
                        "// resources), the offset table inlined: no table texture. Draw it over the frame.\n" +
                        defines + "#define RSAA_TABLE_ARRAY\n" + offset_table_glsl(table) +
                        rsaa_shader_file("rsaa_post.frag")});
-  if (!multisample) {
+  if (multisample) {
+    // The record passes that turn the multisample draw's records into the codes the post-process
+    // reads: texture units 0-5, code images from 0, the pixel list at storage binding 0.
+    const std::string record_defines = rsaa_record_pass_defines(table.pattern, 0, 0, 0);
+    const std::string usage =
+        "// The multisample pre-pass's record passes (shaders/rsaa_prepass_records.glsl documents them).\n"
+        "// After the pre-pass draw: bind the centre textures (units --first-unit to +2), the draw's\n"
+        "// records (RG32UI, unit 0) and depths (unit 1) and, with material edges, materials (R32UI,\n"
+        "// unit 4), the code textures as images (units 0.., write-only), a buffer of 16 + 4 x width x\n"
+        "// height bytes at storage binding 0 whose first 16 bytes are {0, 1, 1, 0}; set rsaa_rows\n"
+        "// (location 0) to (0, height); dispatch rsaa_prepass_list.comp over the image in its work\n"
+        "// groups, then rsaa_post_list_size.comp (1 group), then rsaa_prepass_codes.comp indirectly\n"
+        "// from the buffer's first 12 bytes, with memory barriers between (RsaaPass::codes_from_records).\n";
+    for (const char* name : {"rsaa_prepass_list.comp", "rsaa_prepass_codes.comp", "rsaa_post_list_size.comp"})
+      files.push_back({a.out_dir + "/" + name, "#version 450 core\n" + header + usage + defines + record_defines +
+                                                   rsaa_shader_file(name)});
+  }
+  {
     // Post-pass authentication is the post-process's; pre-pass authentication is the pre-pass's.
     std::string hlsl_defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(n) + "\n#define RSAA_AUTH " +
                                std::to_string(a.settings.auth == 1 ? 1 : 0) + "\n#define RSAA_CODE_BITS " +
@@ -88,7 +105,6 @@ int run_shaders(ShadersArgs a) {
   const auto lock = claim_out_dir(a.out_dir, "rsaa shaders");
   write_files_atomically(files);
   for (const auto& [path, text] : files) std::printf("wrote %s\n", path.c_str());
-  if (multisample) std::printf("(no rsaa_post.hlsl: the HLSL post-process reads the jittered pre-pass's packed codes)\n");
   return 0;
 }
 
