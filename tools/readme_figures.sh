@@ -8,8 +8,9 @@
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
 #   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
-#   --only cost: just the timing steps (post-process at 1280x720, the culled pre-pass, how cost
-#            grows, the bench; about 15 minutes), to measure them again on a quiet machine.
+#   --only cost: just the timing steps (post-process at 1280x720, the culled pre-pass, the
+#            multisample pre-pass and the union pattern, how cost grows, the bench; about 20
+#            minutes), to measure them again on a quiet machine.
 #   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -62,10 +63,15 @@ cost_steps() {
     --width 1280 --height 720 --frames 3 --orbit-frames 2 \
     --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me cull" \
     --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
+  step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)" prepass-union.md
+  { for t in custom-gl4x-union d3d8x gl4x; do $rsaa eval-table tables/$t.json 2>/dev/null; done
+    $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
+      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
+      --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
   step "how cost grows: image size, triangles, lights" growth.md
   $rsaa bench --growth --out-dir "$out/growth" \
-    --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
-    >"$out/growth.md"
+    --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
+    --table tables/custom-gl4x-union.json --table-prepass msaa >"$out/growth.md"
   for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
   step "bench" bench.md
   $rsaa bench --target-psnr 38 --out-dir "$out/bench" >"$out/bench.md"
@@ -187,11 +193,6 @@ bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges
   >"$out/rsaa-goals.md"
 bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
   noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
-step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)" prepass-union.md
-{ for t in custom-gl4x-union d3d8x gl4x; do $rsaa eval-table tables/$t.json 2>/dev/null; done
-  $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
-    --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 msaa cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
-    --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
 cost_steps
 papers_figures
 # The coverage family's goals and the scale test on held-out models (issue 14; about 16 minutes).

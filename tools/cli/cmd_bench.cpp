@@ -75,10 +75,29 @@ std::vector<TechniqueOptions> keep_techniques(const std::vector<TechniqueOptions
 }
 
 // rsaa bench --growth: frame time against image size and triangle count, plots and slopes.
+// RSAA (default options) with the user's table (--table), beside the built-in rows, with the
+// pre-pass or pre-passes --table-prepass names.
+void add_table_rows(const BenchArgs& a, std::vector<TechniqueOptions>& techniques) {
+  if (a.table.empty()) return;
+  if (a.table_prepass != "auto" && a.table_prepass != "jittered" && a.table_prepass != "msaa" &&
+      a.table_prepass != "both")
+    throw std::invalid_argument("--table-prepass must be auto, jittered, msaa or both, not '" + a.table_prepass + "'");
+  for (const char* prepass : {"auto", "jittered", "msaa"}) {
+    const bool both = a.table_prepass == "both" && std::string(prepass) != "auto";
+    if (!both && a.table_prepass != prepass) continue;
+    TechniqueOptions t = technique_options("rsaa");
+    t.table = a.table;
+    t.prepass = prepass;
+    validate(t);
+    techniques.push_back(t);
+  }
+}
+
 int run_growth_command(const BenchArgs& a) {
   bench::GrowthOptions o;
   o.techniques = bench::default_techniques();
   if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
+  add_table_rows(a, o.techniques);
   if (a.quick) {
     o.sizes = {{160, 120}, {320, 240}};
     o.subdivision_levels = {0, 1};
@@ -129,20 +148,7 @@ int run_bench_command(BenchArgs a) {
   if (a.scenes_given && split(a.scenes).empty()) throw std::invalid_argument("--scenes: no scene named");
   if (!a.scenes.empty()) o.scenes = split(a.scenes);
   if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
-  if (!a.table.empty()) {  // RSAA with the user's table, beside the built-in ones
-    if (a.table_prepass != "auto" && a.table_prepass != "jittered" && a.table_prepass != "msaa" &&
-        a.table_prepass != "both")
-      throw std::invalid_argument("--table-prepass must be auto, jittered, msaa or both, not '" + a.table_prepass + "'");
-    for (const char* prepass : {"auto", "jittered", "msaa"}) {
-      const bool both = a.table_prepass == "both" && std::string(prepass) != "auto";
-      if (!both && a.table_prepass != prepass) continue;
-      TechniqueOptions t = technique_options("rsaa");
-      t.table = a.table;
-      t.prepass = prepass;
-      validate(t);
-      o.techniques.push_back(t);
-    }
-  }
+  add_table_rows(a, o.techniques);
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
   if (!a.lights.empty()) {
     const auto lights = light_counts(a.lights);
@@ -200,7 +206,8 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--techniques", args->techniques,
                   "Comma-separated labels to keep (e.g. 'msaa 4x,dyncov'; noaa is always run)");
   cmd->add_option("--table", args->table,
-                  "Also bench RSAA (default options) with this offset table file (JSON), e.g. a scene-specific one");
+                  "Also bench RSAA (default options) with this offset table file (JSON), e.g. a scene-specific one "
+                  "(with --growth too)");
   cmd->add_option("--table-prepass", args->table_prepass,
                   "Pre-pass of the --table row: auto (msaa where the driver can), jittered, msaa (one "
                   "multisample draw, or two for a union pattern such as tables/custom-gl4x-union.json) or both "
