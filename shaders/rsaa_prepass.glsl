@@ -121,7 +121,7 @@ uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 vi
 // written once per pixel for every covered sample (the fragment shader runs once per pixel, as
 // in any MSAA G-buffer pass; the depth buffer holds each sample's own depth), then turned into
 // codes by the pass (rsaa_prepass_records.glsl). Two 32-bit words, so that the draw writes and
-// the pass reads 8 bytes a sample (a 16-byte record cost the draw half as much again on
+// the pass reads 8 bytes a sample (16-byte records, tried first, made the draw markedly slower on
 // llvmpipe): x the primitive, y the face normal as the centre's is stored (rsaa_encode_normal,
 // 2 x 16 bits, its sign flipped to z >= 0: the similarity measures use |n . r| only). y = 0: no
 // surface covers the sample (the records are cleared to 0; an encoded normal is never 0);
