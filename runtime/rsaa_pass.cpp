@@ -29,18 +29,20 @@ struct RsaaTargets::Objects {
 struct RsaaPass::Objects {
   std::vector<gl::Texture> codes;  // four subsamples per texel (RGBA), ceil(n / 4) textures
   gl::Texture subsample_depth, table;
-  // Multisample pre-pass: the surface records (RG32UI), depths and, with material edges,
-  // materials (R32UI) of its draw, sample i = subsample i; the record passes turn them into `codes`.
-  gl::Texture records_ms, depth_ms, materials_ms;
+  // The pre-passes that write surface records: the records (RG32UI), depths and, with material
+  // edges, materials (R32UI), sample i (multisample) or layer i (RsaaSettings::prepass "records")
+  // = subsample i; the record passes turn them into `codes`.
+  gl::Texture records, record_depths, record_materials;
   gl::Framebuffer multisample_target;
   // Union pre-pass (2m subsamples from two m-sample draws): the shifted draw's, sample i =
   // subsample m + i of the pixel that contains the point it sees.
-  gl::Texture records_ms2, depth_ms2, materials_ms2;
+  gl::Texture records2, record_depths2, record_materials2;
   gl::Framebuffer multisample_target2;
   gl::Program record_list_program, record_codes_program;
   GLint record_list_group[3] = {1, 1, 1};
-  bool record_images = false;  // the record passes read the records as multisample images
-  std::vector<gl::Framebuffer> subsample_targets;  // one per code texture
+  bool record_images = false;  // the record passes read the records as images
+  // Jittered pre-pass: one per code texture; "records": one per subsample (its layers).
+  std::vector<gl::Framebuffer> subsample_targets;
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
   // Every texture the pass reads is read through these (the colour bilinear, the others
   // nearest), not through the texture's own parameters nor an engine's sampler objects: a
@@ -388,6 +390,7 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
                         "#define RSAA_PREPASS_FIRST_UNIT " + std::to_string(settings.prepass_first_unit) + "\n" +
                         "#define RSAA_UNIFORM_BINDING " + std::to_string(settings.uniform_binding) + "\n";
   if (multisample_prepass) defines += "#define RSAA_PREPASS_MSAA\n";
+  else if (settings.prepass == "records") defines += "#define RSAA_PREPASS_RECORDS\n";
   if (multisample_prepass && union_pattern)
     defines += "#define RSAA_PREPASS_MSAA_UNION\n#define RSAA_MS_SAMPLES " + std::to_string(sample_count / 2) + "\n";
   if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
@@ -463,13 +466,15 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   const int n = pattern_.size();
   if (settings.post != "edges" && settings.post != "single" && settings.post != "compute")
     throw std::invalid_argument("RSAA post '" + settings.post + "' is not one of edges, compute, single");
-  if (settings.prepass != "auto" && settings.prepass != "jittered" && settings.prepass != "msaa")
-    throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of auto, jittered, msaa");
+  if (settings.prepass != "auto" && settings.prepass != "jittered" && settings.prepass != "msaa" &&
+      settings.prepass != "records")
+    throw std::invalid_argument("RSAA prepass '" + settings.prepass + "' is not one of auto, jittered, msaa, records");
   if (settings.prepass_cull != "off" && settings.prepass_cull != "neighbours")
     throw std::invalid_argument("RSAA prepass_cull '" + settings.prepass_cull + "' is not one of off, neighbours");
   cull_ = settings.prepass_cull == "neighbours";
-  if (cull_ && settings.prepass == "msaa")
+  if (cull_ && (settings.prepass == "msaa" || settings.prepass == "records"))
     throw std::invalid_argument("RSAA prepass_cull neighbours needs the jittered pre-pass, not '" + settings.prepass + "'");
+  layered_ = settings.prepass == "records";
   // "auto": the multisample pre-pass where the driver samples the pattern (and its pixel list can
   // address the image), else the jittered one.
   const bool may_multisample =
@@ -496,9 +501,18 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
       }
       return gl::make_framebuffer(colours, {depth.get()});
     };
-    gl_->multisample_target = make_draw_target(gl_->records_ms, gl_->depth_ms, gl_->materials_ms);
+    gl_->multisample_target = make_draw_target(gl_->records, gl_->record_depths, gl_->record_materials);
     if (union_)
-      gl_->multisample_target2 = make_draw_target(gl_->records_ms2, gl_->depth_ms2, gl_->materials_ms2);
+      gl_->multisample_target2 = make_draw_target(gl_->records2, gl_->record_depths2, gl_->record_materials2);
+  } else if (layered_) {
+    gl_->records = gl::make_texture_2d_array(GL_RG32UI, width, height, n);
+    gl_->record_depths = gl::make_texture_2d_array(GL_DEPTH_COMPONENT32F, width, height, n);
+    if (settings.material_edges) gl_->record_materials = gl::make_texture_2d_array(GL_R32UI, width, height, n);
+    for (int i = 0; i < n; ++i) {
+      std::vector<gl::Attachment> colours = {{gl_->records.get(), i}};
+      if (settings.material_edges) colours.push_back({gl_->record_materials.get(), i});
+      gl_->subsample_targets.push_back(gl::make_framebuffer(colours, {gl_->record_depths.get(), i}));
+    }
   } else {
     gl_->subsample_depth = gl::make_texture_2d(cull_ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F, width, height);
     const gl::Attachment depth{gl_->subsample_depth.get()};
@@ -544,15 +558,17 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                          "RSAA post-process edge pass");
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
   }
-  // The compute post-process and the multisample pre-pass's record passes list pixels (one list
-  // buffer, used by each in turn). The list packs a pixel's x and y into 16 bits each.
-  if ((settings.post == "compute" || multisample_) && (width > 65536 || height > 65536))
-    throw std::invalid_argument("RSAA " + std::string(multisample_ ? "prepass msaa" : "post compute") +
+  // The compute post-process and the record passes of the pre-passes that write surface records
+  // list pixels (one list buffer, used by each in turn). The list packs a pixel's x and y into 16
+  // bits each.
+  const bool writes_records = multisample_ || layered_;
+  if ((settings.post == "compute" || writes_records) && (width > 65536 || height > 65536))
+    throw std::invalid_argument("RSAA " + (writes_records ? "prepass " + settings.prepass : std::string("post compute")) +
                                 ": the pixel list packs coordinates into 16 bits; a " + std::to_string(width) + "x" +
                                 std::to_string(height) + " image needs " +
-                                (multisample_ ? "the jittered pre-pass" : "post edges"));
+                                (writes_records ? "the jittered pre-pass" : "post edges"));
   const std::string list_defines = "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
-  if (settings.post == "compute" || multisample_) {
+  if (settings.post == "compute" || writes_records) {
     gl_->list_size_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_list_size.comp")}},
                                               defines + list_defines, "RSAA pixel list size");
     // Every pixel of the image, or as many rows as the driver's storage block holds (8192 x 4096
@@ -561,21 +577,22 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
   }
-  if (multisample_) {
+  if (writes_records) {
     const int record_unit = record_first_unit(settings.prepass_first_unit);
     GLint compute_units = 0;
     glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &compute_units);
     if (std::max(record_unit + kRecordUnits - 1, settings.prepass_first_unit + 2) >= compute_units)
-      throw std::invalid_argument("RSAA prepass msaa: its compute passes need texture units " +
+      throw std::invalid_argument("RSAA prepass " + settings.prepass + ": its compute passes need texture units " +
                                   std::to_string(settings.prepass_first_unit) + " to +2 and " +
                                   std::to_string(record_unit) + " to +" + std::to_string(kRecordUnits - 1) +
                                   ", this driver has " +
                                   std::to_string(compute_units) + " compute texture units (lower prepass_first_unit)");
-    // The records as images where the driver loads multisample images of that many samples.
+    // The records as images where the image units suffice and, for multisample records, the
+    // driver loads multisample images of that many samples.
     GLint image_samples = 0, image_units = 0;
     glGetIntegerv(GL_MAX_IMAGE_SAMPLES, &image_samples);
     glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_units);
-    make_record_programs(image_samples >= (union_ ? n / 2 : n) &&
+    make_record_programs((layered_ || image_samples >= (union_ ? n / 2 : n)) &&
                          kFirstCodeImageUnit + int(gl_->codes.size()) + 4 <= image_units);
   }
   if (settings.post == "compute") {
@@ -598,8 +615,8 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   const double code_bytes = settings_.code_bits / 8.0;
   double bytes = 0.0;
   bytes += (n + 3) / 4 * 4 * code_bytes;  // RGBA code texels
-  if (multisample_)
-    // a surface record, a 32-bit depth and (material edges) a material a sample, both draws of a union
+  if (multisample_ || layered_)
+    // a surface record, a 32-bit depth and (material edges) a material a subsample (both draws of a union)
     bytes += n * (8.0 + 4.0 + (settings_.material_edges ? 4.0 : 0.0));
   else
     bytes += cull_ ? 8.0 : 4.0;  // the draws' depth (+ stencil)
@@ -663,9 +680,10 @@ void RsaaPass::codes_from_records() {
   for (int k = 0; k < kRecordUnits; ++k) units.push_back(record_unit + k);
   const gl::SavedState saved(units);
   const gl::SavedComputeState saved_compute({kEdgeListBinding}, image_units);
-  const GLuint records[kRecordUnits] = {gl_->records_ms.get(),   gl_->depth_ms.get(),     gl_->records_ms2.get(),
-                                        gl_->depth_ms2.get(),    gl_->materials_ms.get(), gl_->materials_ms2.get()};
+  const GLuint records[kRecordUnits] = {gl_->records.get(),   gl_->record_depths.get(),     gl_->records2.get(),
+                                        gl_->record_depths2.get(),    gl_->record_materials.get(), gl_->record_materials2.get()};
   glBindTextures(GLuint(record_unit), kRecordUnits, records);
+  const GLboolean layered = layered_ ? GL_TRUE : GL_FALSE;  // array textures: every layer
   const std::vector<GLuint> samplers(kRecordUnits, gl_->nearest.get());
   glBindSamplers(GLuint(record_unit), kRecordUnits, samplers.data());
   for (int k = 0; k < code_images; ++k)
@@ -673,10 +691,10 @@ void RsaaPass::codes_from_records() {
                        GL_WRITE_ONLY, code_format(settings_.code_bits));
   if (gl_->record_images)
     for (int d = 0; d < (union_ ? 2 : 1); ++d) {
-      glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + d), records[2 * d], 0, GL_FALSE, 0, GL_READ_ONLY,
+      glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + d), records[2 * d], 0, layered, 0, GL_READ_ONLY,
                          GL_RG32UI);
       if (settings_.material_edges)
-        glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + 2 + d), records[4 + d], 0, GL_FALSE, 0,
+        glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + 2 + d), records[4 + d], 0, layered, 0,
                            GL_READ_ONLY, GL_R32UI);
     }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
@@ -753,6 +771,23 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     }
     codes_from_records();
     gl::check("RSAA pre-pass (multisample)");
+    codes_ready_ = true;
+    return;
+  }
+  if (layered_) {  // a jittered draw per subsample, each writing surface records into its own layers
+    glClearTexImage(gl_->records.get(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, nullptr);  // 0: no surface
+    glClearTexImage(gl_->record_depths.get(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far_depth);
+    for (int i = 0; i < pattern_.size(); ++i) {
+      glBindFramebuffer(GL_FRAMEBUFFER, gl_->subsample_targets[std::size_t(i)].get());
+      glViewport(0, 0, frame.width, frame.height);
+      const Vec2 s = pattern_.positions[i];
+      const glm::vec2 jitter = jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height);
+      write_per_draw(jitter, i, {0.0, 0.0});
+      set_depth_state();  // again: the previous callback may have changed it
+      draw(i, jitter);
+    }
+    codes_from_records();
+    gl::check("RSAA pre-pass (records)");
     codes_ready_ = true;
     return;
   }

@@ -168,8 +168,11 @@ struct RsaaSettings {
   // the second shifted; refused where the driver can do neither. Its masks equal the jittered
   // pre-pass's (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's
   // outermost pixels) at a third of its cost for 4 subsamples on llvmpipe (README, *The
-  // multisample pre-pass*). "auto" (default): "msaa" where the driver can, else "jittered" (and
-  // "jittered" with prepass_cull).
+  // multisample pre-pass*). "records": the jittered draws, each writing the surface records (into
+  // its own layers of array textures) instead of codes, and the same compute passes after: any
+  // pattern, the same masks as "jittered" up to float ties (the records round the face normal to
+  // 2 x 16 bits), more memory (12-16 bytes a subsample). "auto" (default): "msaa" where the driver
+  // can, else "jittered" (and "jittered" with prepass_cull).
   std::string prepass = "auto";
   // Culling of the jittered pre-pass (ours): "off" draws every subsample for every pixel (the
   // paper); "neighbours" first marks, once per frame, the pixels whose 3x3 neighbourhood of
@@ -318,6 +321,7 @@ class RsaaPass {
   SamplePattern pattern_;
   bool multisample_ = false;
   bool union_ = false;   // the multisample pre-pass as two draws of half the samples (union pattern)
+  bool layered_ = false;  // settings.prepass == "records": jittered draws writing surface records
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes

@@ -24,6 +24,8 @@
 // Defines expected before inclusion (RsaaPass::prepass_glsl() writes them for a pass):
 //   RSAA_SAMPLE_COUNT, RSAA_AUTH (0, 1, 2), RSAA_CODE_BITS, the similarity (rsaa_common.glsl)
 //   RSAA_PREPASS_MSAA          (optional) the multisample pre-pass
+//   RSAA_PREPASS_RECORDS       (optional) jittered draws that write surface records, as the
+//                              multisample pre-pass does, each into its own layer
 //   RSAA_MATERIAL_EDGES        (optional) material edges: the centre primitive target is RG32UI
 //                              with the material in .y, and the fragment stage calls
 //                              rsaa_prepass_code(view_position, view_face_normal, primitive, material)
@@ -142,7 +144,8 @@ vec3 rsaa_record_normal(uvec2 record) {
   return rsaa_decode_normal(uvec2(record.y & 0xffffu, record.y >> 16u));
 }
 
-#if defined(RSAA_PREPASS_MSAA) && defined(RSAA_MATERIAL_EDGES) && !defined(RSAA_PREPASS_COMPUTE)
+#if (defined(RSAA_PREPASS_MSAA) || defined(RSAA_PREPASS_RECORDS)) && defined(RSAA_MATERIAL_EDGES) && \
+    !defined(RSAA_PREPASS_COMPUTE)
 layout(location = 1) out uint rsaa_material_record;
 #endif
 
@@ -157,7 +160,7 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
 uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive) {
   const uint material = 0u;
 #endif
-#ifdef RSAA_PREPASS_MSAA
+#if defined(RSAA_PREPASS_MSAA) || defined(RSAA_PREPASS_RECORDS)
 #ifdef RSAA_MATERIAL_EDGES
   rsaa_material_record = material;
 #endif

@@ -1,5 +1,6 @@
-// The multisample pre-pass's second half (RsaaPass, RsaaSettings::prepass "msaa"): the surface
-// records and depths of one multisample draw (two for a union pattern) turned into the similarity
+// The second half of the pre-passes that write surface records (RsaaPass, RsaaSettings::prepass
+// "msaa": one multisample draw, two for a union pattern; "records": a jittered draw per
+// subsample into the layers of array textures): records and depths turned into the similarity
 // codes the jittered pre-pass writes, packed the same way (subsample i in channel i % 4 of code
 // image i / 4), so that the post-process reads one layout. Two compute passes:
 //   rsaa_prepass_list.comp   every pixel: the codes the records tell alone (a sample on the
@@ -11,7 +12,8 @@
 // the listed pixels only.
 //
 // Defines expected before inclusion, beside rsaa_prepass.glsl's:
-//   RSAA_PREPASS_MSAA, RSAA_PREPASS_MSAA_UNION + RSAA_MS_SAMPLES (a union pattern)
+//   RSAA_PREPASS_MSAA, RSAA_PREPASS_MSAA_UNION + RSAA_MS_SAMPLES (a union pattern), or
+//   RSAA_PREPASS_RECORDS
 //   RSAA_RECORD_FIRST_UNIT   texture units: records, depths, (union) the shifted draw's, then
 //                            with RSAA_MATERIAL_EDGES the materials of each draw (+ 4, + 5)
 //   RSAA_RECORD_CODE_IMAGES  first image unit of the code images (ceil(RSAA_SAMPLE_COUNT / 4))
@@ -30,8 +32,22 @@
 #define RSAA_PREPASS_COMPUTE
 #include "rsaa_prepass.glsl"
 
-#ifndef RSAA_PREPASS_MSAA
-#error "the record passes are the multisample pre-pass's: define RSAA_PREPASS_MSAA"
+// Where the records are: the samples of multisample textures (RSAA_PREPASS_MSAA), or the layers of
+// array textures, layer i = subsample i (RSAA_PREPASS_RECORDS: jittered draws writing records).
+#if defined(RSAA_PREPASS_RECORDS)
+#define RSAA_RECORD_USAMPLER usampler2DArray
+#define RSAA_RECORD_SAMPLER sampler2DArray
+#define RSAA_RECORD_UIMAGE uimage2DArray
+#define RSAA_RECORD_FETCH(records, raster, index) texelFetch(records, ivec3(raster, index), 0)
+#define RSAA_RECORD_LOAD(records, raster, index) imageLoad(records, ivec3(raster, index))
+#elif defined(RSAA_PREPASS_MSAA)
+#define RSAA_RECORD_USAMPLER usampler2DMS
+#define RSAA_RECORD_SAMPLER sampler2DMS
+#define RSAA_RECORD_UIMAGE uimage2DMS
+#define RSAA_RECORD_FETCH(records, raster, index) texelFetch(records, raster, index)
+#define RSAA_RECORD_LOAD(records, raster, index) imageLoad(records, raster, index)
+#else
+#error "the record passes need RSAA_PREPASS_MSAA or RSAA_PREPASS_RECORDS"
 #endif
 #define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
 #if RSAA_CODE_BITS == 8
@@ -42,22 +58,22 @@
 #define RSAA_CODE_IMAGE_FORMAT rgba32ui
 #endif
 
-layout(binding = RSAA_RECORD_FIRST_UNIT) uniform usampler2DMS rsaa_records;
-layout(binding = RSAA_RECORD_FIRST_UNIT + 1) uniform sampler2DMS rsaa_record_depths;
+layout(binding = RSAA_RECORD_FIRST_UNIT) uniform RSAA_RECORD_USAMPLER rsaa_records;
+layout(binding = RSAA_RECORD_FIRST_UNIT + 1) uniform RSAA_RECORD_SAMPLER rsaa_record_depths;
 #ifdef RSAA_PREPASS_MSAA_UNION
-layout(binding = RSAA_RECORD_FIRST_UNIT + 2) uniform usampler2DMS rsaa_records2;
-layout(binding = RSAA_RECORD_FIRST_UNIT + 3) uniform sampler2DMS rsaa_record_depths2;
+layout(binding = RSAA_RECORD_FIRST_UNIT + 2) uniform RSAA_RECORD_USAMPLER rsaa_records2;
+layout(binding = RSAA_RECORD_FIRST_UNIT + 3) uniform RSAA_RECORD_SAMPLER rsaa_record_depths2;
 #endif
 #ifdef RSAA_RECORD_IMAGES
-layout(binding = RSAA_RECORD_IMAGES, rg32ui) uniform readonly uimage2DMS rsaa_record_images[2];
+layout(binding = RSAA_RECORD_IMAGES, rg32ui) uniform readonly RSAA_RECORD_UIMAGE rsaa_record_images[2];
 #ifdef RSAA_MATERIAL_EDGES
-layout(binding = RSAA_RECORD_IMAGES + 2, r32ui) uniform readonly uimage2DMS rsaa_material_images[2];
+layout(binding = RSAA_RECORD_IMAGES + 2, r32ui) uniform readonly RSAA_RECORD_UIMAGE rsaa_material_images[2];
 #endif
 #endif
 #ifdef RSAA_MATERIAL_EDGES
-layout(binding = RSAA_RECORD_FIRST_UNIT + 4) uniform usampler2DMS rsaa_record_materials;
+layout(binding = RSAA_RECORD_FIRST_UNIT + 4) uniform RSAA_RECORD_USAMPLER rsaa_record_materials;
 #ifdef RSAA_PREPASS_MSAA_UNION
-layout(binding = RSAA_RECORD_FIRST_UNIT + 5) uniform usampler2DMS rsaa_record_materials2;
+layout(binding = RSAA_RECORD_FIRST_UNIT + 5) uniform RSAA_RECORD_USAMPLER rsaa_record_materials2;
 #endif
 #endif
 #ifndef RSAA_PREPASS_MSAA_UNION
@@ -92,23 +108,23 @@ bool rsaa_record_at(ivec2 pixel, int i, out ivec2 raster, out int sample_index) 
 
 uvec2 rsaa_record(int i, ivec2 raster, int sample_index) {
 #ifdef RSAA_RECORD_IMAGES
-  return imageLoad(rsaa_record_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).xy;
+  return RSAA_RECORD_LOAD(rsaa_record_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).xy;
 #else
 #ifdef RSAA_PREPASS_MSAA_UNION
-  if (i >= RSAA_MS_SAMPLES) return texelFetch(rsaa_records2, raster, sample_index).xy;
+  if (i >= RSAA_MS_SAMPLES) return RSAA_RECORD_FETCH(rsaa_records2, raster, sample_index).xy;
 #endif
-  return texelFetch(rsaa_records, raster, sample_index).xy;
+  return RSAA_RECORD_FETCH(rsaa_records, raster, sample_index).xy;
 #endif
 }
 
 uint rsaa_record_material(int i, ivec2 raster, int sample_index) {
 #if defined(RSAA_MATERIAL_EDGES) && defined(RSAA_RECORD_IMAGES)
-  return imageLoad(rsaa_material_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).x;
+  return RSAA_RECORD_LOAD(rsaa_material_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).x;
 #elif defined(RSAA_MATERIAL_EDGES)
 #ifdef RSAA_PREPASS_MSAA_UNION
-  if (i >= RSAA_MS_SAMPLES) return texelFetch(rsaa_record_materials2, raster, sample_index).x;
+  if (i >= RSAA_MS_SAMPLES) return RSAA_RECORD_FETCH(rsaa_record_materials2, raster, sample_index).x;
 #endif
-  return texelFetch(rsaa_record_materials, raster, sample_index).x;
+  return RSAA_RECORD_FETCH(rsaa_record_materials, raster, sample_index).x;
 #else
   return 0u;
 #endif
@@ -116,9 +132,9 @@ uint rsaa_record_material(int i, ivec2 raster, int sample_index) {
 
 float rsaa_record_depth(int i, ivec2 raster, int sample_index) {
 #ifdef RSAA_PREPASS_MSAA_UNION
-  if (i >= RSAA_MS_SAMPLES) return texelFetch(rsaa_record_depths2, raster, sample_index).x;
+  if (i >= RSAA_MS_SAMPLES) return RSAA_RECORD_FETCH(rsaa_record_depths2, raster, sample_index).x;
 #endif
-  return texelFetch(rsaa_record_depths, raster, sample_index).x;
+  return RSAA_RECORD_FETCH(rsaa_record_depths, raster, sample_index).x;
 }
 
 void rsaa_store_codes(ivec2 pixel, uint codes[RSAA_SAMPLE_COUNT]) {

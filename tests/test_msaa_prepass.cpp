@@ -5,6 +5,7 @@
 // different surface.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -40,15 +41,17 @@ struct MaskComparison {
   std::size_t pixels = 0, edges_jittered = 0, edges_msaa = 0, differing = 0;
 };
 
-// The masks of both pre-passes for RSAA 4x (gl4x, the driver's positions) with `settings`.
-MaskComparison compare_prepasses(const std::string& scene_name, RsaaSettings settings, int border = 0) {
+// The masks of the jittered pre-pass and of `other` ("msaa": RSAA 4x, gl4x, the driver's
+// positions, unless settings has a table; "records": settings' pattern) with `settings`.
+MaskComparison compare_prepasses(const std::string& scene_name, RsaaSettings settings, int border = 0,
+                                 const std::string& other = "msaa") {
   const Scene scene = load_scene(scene_name);
   const GpuScene gpu(scene);
   const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
-  if (!settings.table) settings.pattern = "gl4x";
+  if (!settings.table && other == "msaa") settings.pattern = "gl4x";
   settings.prepass = "jittered";
   const std::vector<std::uint32_t> jittered = masks_of(gpu, view, settings);
-  settings.prepass = "msaa";
+  settings.prepass = other;
   const std::vector<std::uint32_t> msaa = masks_of(gpu, view, settings);
   MaskComparison c;
   const std::uint32_t all_similar = (1u << RsaaPass(settings, kWidth, kHeight).pattern().size()) - 1u;
@@ -62,9 +65,9 @@ MaskComparison compare_prepasses(const std::string& scene_name, RsaaSettings set
     if (std::getenv("RSAA_TEST_VERBOSE") && jittered[p] != msaa[p])
       std::printf("  (%d, %d): jittered %x, msaa %x\n", x, y, jittered[p], msaa[p]);
   }
-  std::printf("%s %s auth %d: %zu of %zu masks differ (edge pixels: jittered %zu, msaa %zu)\n",
+  std::printf("%s %s auth %d: %zu of %zu masks differ (edge pixels: jittered %zu, %s %zu)\n",
               scene_name.c_str(), settings.similarity.c_str(), settings.auth, c.differing, c.pixels,
-              c.edges_jittered, c.edges_msaa);
+              c.edges_jittered, other.c_str(), c.edges_msaa);
   return c;
 }
 
@@ -83,17 +86,22 @@ struct Variant {
 constexpr Variant kVariants[] = {
     {"sadp-plane", 0, 0}, {"sadp", 0, 0}, {"depth", 0, 0}, {"sadp", 1, 0}, {"sadp-plane", 2, 21}};
 
-void expect_same_masks(const std::string& scene_name) {
+// `floor`: the least tolerance. The records of d3d8x's jittered draws ("records") carry the
+// face normal in 2 x 16 bits where the jittered draw's fragment uses it unrounded, and 1-3 of
+// 76,800 masks of the default scene tie differently (11 with pre-pass authentication), measured
+// when written; 10 (and 3x that with pre-pass authentication) allowed.
+void expect_same_masks(const std::string& scene_name, const std::string& other = "msaa", std::size_t floor = 0) {
   for (const Variant& v : kVariants) {
     RsaaSettings settings;
     settings.similarity = v.similarity;
     settings.auth = v.auth;
-    const MaskComparison c = compare_prepasses(scene_name, settings);
+    const std::size_t tolerance = std::max(v.tolerance, v.auth == 2 ? 3 * floor : floor);
+    const MaskComparison c = compare_prepasses(scene_name, settings, 0, other);
     EXPECT_GT(c.edges_jittered, 1000u) << scene_name << ": the comparison exercises edges";
-    EXPECT_LE(c.differing, v.tolerance) << scene_name << " " << v.similarity << " auth " << v.auth;
+    EXPECT_LE(c.differing, tolerance) << scene_name << " " << v.similarity << " auth " << v.auth;
     // Ties move a subsample between clusters, never add or remove edge pixels wholesale.
-    EXPECT_LE(c.edges_msaa, c.edges_jittered + v.tolerance) << scene_name << " " << v.similarity;
-    EXPECT_GE(c.edges_msaa + v.tolerance, c.edges_jittered) << scene_name << " " << v.similarity;
+    EXPECT_LE(c.edges_msaa, c.edges_jittered + tolerance) << scene_name << " " << v.similarity;
+    EXPECT_GE(c.edges_msaa + tolerance, c.edges_jittered) << scene_name << " " << v.similarity;
   }
 }
 
@@ -147,6 +155,19 @@ TEST_F(PrePassCull, NeedsTheJitteredPrePass) {
 }
 
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnDefaultScene) { expect_same_masks("builtin:default"); }
+
+// The jittered draws writing surface records (RsaaSettings::prepass "records"), d3d8x: the codes
+// made by the record passes, as the multisample pre-pass's are.
+TEST_F(MsaaPrePass, RecordsGiveTheJitteredMasks) {
+  for (const char* scene : {"builtin:default", "builtin:edges"}) expect_same_masks(scene, "records", 10);
+  for (const char* scene : {"builtin:coplanar", "builtin:default"}) {
+    RsaaSettings settings;
+    settings.material_edges = true;
+    const MaskComparison c = compare_prepasses(scene, settings, 0, "records");
+    EXPECT_GT(c.edges_jittered, 1000u) << scene;
+    EXPECT_LE(c.differing, 10u) << scene;
+  }
+}
 
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnEdgesScene) { expect_same_masks("builtin:edges"); }
 

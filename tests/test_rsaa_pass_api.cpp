@@ -1303,26 +1303,29 @@ std::vector<std::uint8_t> read_back_codes(const RsaaPass& pass, int width, int h
   return all;
 }
 
-// The multisample pre-pass's record passes give the same codes, byte for byte, whether they read
-// the records as multisample images (where the driver loads them) or as textures (the fallback),
-// and in rounds of rows when the pixel list cannot hold every pixel; with and without material
-// edges, for one 4x draw and for the union pattern's two.
-TEST_F(RsaaPassApi, TheMultisamplePrePassCodesDoNotDependOnHowItReadsItsRecords) {
+// The record passes give the same codes, byte for byte, whether they read the records as images
+// (where the driver loads them) or as textures (the fallback), and in rounds of rows when the
+// pixel list cannot hold every pixel; with and without material edges, for the multisample
+// pre-pass's one 4x draw and the union pattern's two, and for d3d8x's jittered draws writing
+// records into layers ("records").
+TEST_F(RsaaPassApi, TheRecordPassesCodesDoNotDependOnHowTheyReadTheRecords) {
   constexpr int width = 163, height = 117;
   const auto union_table = std::make_shared<const OffsetTable>(
       read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-union.json"));
   for (const bool material_edges : {false, true}) {
     const test::SceneFrame scene("builtin:coplanar", width, height, material_edges);
-    for (const bool union_pattern : {false, true}) {
+    for (const char* pre_pass : {"gl4x", "union", "records"}) {
       RsaaSettings settings;
       settings.prepass = "msaa", settings.material_edges = material_edges;
-      if (union_pattern)
+      if (std::string(pre_pass) == "union")
         settings.table = union_table, settings.pattern = "";
-      else
+      else if (std::string(pre_pass) == "gl4x")
         settings.pattern = "gl4x";
-      SCOPED_TRACE(std::string(union_pattern ? "union" : "gl4x") + (material_edges ? ", material edges" : ""));
+      else
+        settings.prepass = "records";
+      SCOPED_TRACE(std::string(pre_pass) + (material_edges ? ", material edges" : ""));
       RsaaPass images(settings, width, height);
-      ASSERT_TRUE(images.multisample_prepass());
+      ASSERT_EQ(images.multisample_prepass(), settings.prepass == "msaa");
       scene.render_subsamples(images);
       const std::vector<std::uint8_t> expected = read_back_codes(images, width, height);
       std::size_t not_one = 0;

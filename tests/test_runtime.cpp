@@ -101,6 +101,10 @@ TEST_F(Runtime, RsaaMemoryCountsEveryBufferItKeeps) {
   EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 24 + 4 + 4 * 16 + list + 8);
   multisample.material_edges = false, multisample.post = "single";
   EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 20 + 4 + 4 * 12 + list);
+  // d3d8x's jittered draws writing records: the same per subsample, in layers.
+  RsaaSettings records;
+  records.prepass = "records", records.material_edges = true;
+  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 16 + list + 8);
 }
 
 TEST_F(Runtime, DriverPatternMatchesTheCheckedInGl4xTable) {

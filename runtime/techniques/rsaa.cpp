@@ -99,11 +99,12 @@ void validate_rsaa(const TechniqueOptions& o) {
     if (n == 8 && o.pattern != "d3d8x") bad("rsaa --samples 8 uses --pattern d3d8x");
     if (n == 4 && o.pattern != "gl4x" && o.pattern != "d3d4x") bad("rsaa --samples 4 uses --pattern gl4x or d3d4x");
   }
-  if (o.prepass != "auto" && o.prepass != "jittered" && o.prepass != "msaa")
-    bad("rsaa --prepass must be auto, jittered or msaa, not '" + o.prepass + "'");
+  if (o.prepass != "auto" && o.prepass != "jittered" && o.prepass != "msaa" && o.prepass != "records")
+    bad("rsaa --prepass must be auto, jittered, msaa or records, not '" + o.prepass + "'");
   if (o.prepass_cull != "off" && o.prepass_cull != "neighbours")
     bad("rsaa --prepass-cull must be off or neighbours, not '" + o.prepass_cull + "'");
-  if (o.prepass_cull != "off" && o.prepass == "msaa") bad("rsaa --prepass-cull needs --prepass jittered (or auto)");
+  if (o.prepass_cull != "off" && (o.prepass == "msaa" || o.prepass == "records"))
+    bad("rsaa --prepass-cull needs --prepass jittered (or auto)");
   if (!o.table.empty() && !o.pattern.empty()) bad("rsaa --table brings its own sample pattern: leave out --pattern");
   if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32) bad("rsaa --code-bits must be 8, 16 or 32");
   if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)

@@ -73,6 +73,11 @@ std::vector<TechniqueOptions> default_techniques() {
   TechniqueOptions jittered = technique_options("rsaa", 4);
   jittered.prepass = "jittered";
   list.push_back(jittered);
+  // RSAA 8x with its jittered draws writing surface records, the codes made after as the
+  // multisample pre-pass makes them (the same masks up to float ties).
+  TechniqueOptions records = technique_options("rsaa", 8);
+  records.prepass = "records";
+  list.push_back(records);
   list.push_back(rsaa_default_without_extensions());
   // The defaults' post-process in one pass over every pixel, beside the two-pass one (same image).
   TechniqueOptions single_pass = technique_options("rsaa", 8);
