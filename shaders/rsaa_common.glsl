@@ -108,6 +108,16 @@ const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
 const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
 #endif
 
+// The code textures of RSAA_SAMPLE_COUNT subsamples, four a texel, and their format as images.
+#define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
+#if RSAA_CODE_BITS == 8
+#define RSAA_CODE_IMAGE_FORMAT rgba8ui
+#elif RSAA_CODE_BITS == 16
+#define RSAA_CODE_IMAGE_FORMAT rgba16ui
+#else
+#define RSAA_CODE_IMAGE_FORMAT rgba32ui
+#endif
+
 // What a code stores. SADP lies in [0, 2] and is stored as it is. Depth differences are percent
 // of depth and unbounded: stored linearly they would saturate at 2% (8 and 16 bits), every larger
 // difference would tie and the k-means split would degenerate into a fixed cut. They are stored

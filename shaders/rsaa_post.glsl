@@ -43,7 +43,6 @@
 #include "rsaa_common.glsl"
 #include "rsaa_uniforms.glsl"
 
-#define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
 #define RSAA_ALL_SIMILAR ((1u << RSAA_SAMPLE_COUNT) - 1u)
 
 layout(binding = RSAA_POST_FIRST_UNIT) uniform sampler2D rsaa_colour;  // linear, clamp to edge
@@ -55,13 +54,6 @@ layout(binding = RSAA_POST_FIRST_UNIT + 3) uniform sampler2D rsaa_table;
 layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2D rsaa_codes[RSAA_CODE_TEXTURES];
 
 #ifdef RSAA_CODE_IMAGES
-#if RSAA_CODE_BITS == 8
-#define RSAA_CODE_IMAGE_FORMAT rgba8ui
-#elif RSAA_CODE_BITS == 16
-#define RSAA_CODE_IMAGE_FORMAT rgba16ui
-#else
-#define RSAA_CODE_IMAGE_FORMAT rgba32ui
-#endif
 layout(binding = RSAA_CODE_IMAGES, RSAA_CODE_IMAGE_FORMAT) uniform readonly uimage2D rsaa_code_images[RSAA_CODE_TEXTURES];
 layout(binding = RSAA_CODE_IMAGES + RSAA_CODE_TEXTURES, rg16ui) uniform readonly uimage2D rsaa_centre_normal_image;
 #define RSAA_READS_CODE_IMAGES

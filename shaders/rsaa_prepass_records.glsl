@@ -49,14 +49,6 @@
 #else
 #error "the record passes need RSAA_PREPASS_MSAA or RSAA_PREPASS_RECORDS"
 #endif
-#define RSAA_CODE_TEXTURES ((RSAA_SAMPLE_COUNT + 3) / 4)
-#if RSAA_CODE_BITS == 8
-#define RSAA_CODE_IMAGE_FORMAT rgba8ui
-#elif RSAA_CODE_BITS == 16
-#define RSAA_CODE_IMAGE_FORMAT rgba16ui
-#else
-#define RSAA_CODE_IMAGE_FORMAT rgba32ui
-#endif
 
 layout(binding = RSAA_RECORD_FIRST_UNIT) uniform RSAA_RECORD_USAMPLER rsaa_records;
 layout(binding = RSAA_RECORD_FIRST_UNIT + 1) uniform RSAA_RECORD_SAMPLER rsaa_record_depths;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <cstdio>
 #include <sstream>
@@ -68,31 +69,27 @@ std::vector<TechniqueOptions> default_techniques() {
   list.push_back(technique_options("agaa", 8));
   for (const TechniqueOptions& o : rsaa_variants()) list.push_back(o);
   for (const TechniqueOptions& o : rsaa_defaults()) list.push_back(o);
+  // RSAA with the defaults but one option, beside the defaults.
+  const auto rsaa_with = [&list](int samples, const std::function<void(TechniqueOptions&)>& change) {
+    TechniqueOptions o = technique_options("rsaa", samples);
+    change(o);
+    list.push_back(o);
+  };
   // RSAA 4x with the jittered pre-pass (a draw per subsample), beside the default, which is the
   // one-draw multisample pre-pass where the driver samples gl4x (same masks).
-  TechniqueOptions jittered = technique_options("rsaa", 4);
-  jittered.prepass = "jittered";
-  list.push_back(jittered);
+  rsaa_with(4, [](TechniqueOptions& o) { o.prepass = "jittered"; });
   // RSAA 8x with its jittered draws writing surface records, the codes made after as the
   // multisample pre-pass makes them (the same masks up to float ties).
-  TechniqueOptions records = technique_options("rsaa", 8);
-  records.prepass = "records";
-  list.push_back(records);
+  rsaa_with(8, [](TechniqueOptions& o) { o.prepass = "records"; });
   list.push_back(rsaa_default_without_extensions());
   // The defaults' post-process in one pass over every pixel, beside the two-pass one (same image).
-  TechniqueOptions single_pass = technique_options("rsaa", 8);
-  single_pass.post = "single";
-  list.push_back(single_pass);
+  rsaa_with(8, [](TechniqueOptions& o) { o.post = "single"; });
   // The defaults' post-process as an edge pass and a depth-tested resolve (the default before the
   // edge list; same image).
-  TechniqueOptions edge_pass = technique_options("rsaa", 8);
-  edge_pass.post = "edges";
-  list.push_back(edge_pass);
+  rsaa_with(8, [](TechniqueOptions& o) { o.post = "edges"; });
   // The defaults with the culled jittered pre-pass, beside the full one (same masks but where
   // features thinner than a pixel slip between pixel centres).
-  TechniqueOptions culled = technique_options("rsaa", 8);
-  culled.prepass_cull = "neighbours";
-  list.push_back(culled);
+  rsaa_with(8, [](TechniqueOptions& o) { o.prepass_cull = "neighbours"; });
   return list;
 }
 
