@@ -680,8 +680,9 @@ void RsaaPass::codes_from_records() {
   for (int k = 0; k < kRecordUnits; ++k) units.push_back(record_unit + k);
   const gl::SavedState saved(units);
   const gl::SavedComputeState saved_compute({kEdgeListBinding}, image_units);
-  const GLuint records[kRecordUnits] = {gl_->records.get(),   gl_->record_depths.get(),     gl_->records2.get(),
-                                        gl_->record_depths2.get(),    gl_->record_materials.get(), gl_->record_materials2.get()};
+  const GLuint records[kRecordUnits] = {gl_->records.get(),          gl_->record_depths.get(),
+                                        gl_->records2.get(),         gl_->record_depths2.get(),
+                                        gl_->record_materials.get(), gl_->record_materials2.get()};
   glBindTextures(GLuint(record_unit), kRecordUnits, records);
   const GLboolean layered = layered_ ? GL_TRUE : GL_FALSE;  // array textures: every layer
   const std::vector<GLuint> samplers(kRecordUnits, gl_->nearest.get());

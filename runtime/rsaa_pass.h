@@ -291,10 +291,10 @@ class RsaaPass {
   const SamplePattern& pattern() const { return pattern_; }
   // The similarity codes of the last pre-pass, for an engine that runs its own post-process
   // (shaders/rsaa_post.glsl or .hlsl): RGBA 8/16/32-bit unsigned textures, subsample i in
-  // channel i % 4 of texture i / 4; or, for the multisample pre-pass, one texture whose sample i
-  // is subsample i.
+  // channel i % 4 of texture i / 4, from every pre-pass.
   std::vector<GlName> code_textures() const;
-  // True when the pre-pass is one multisample draw (settings.prepass, resolved for this driver).
+  // True when the pre-pass is the multisample one (one draw, or two for a union pattern:
+  // settings.prepass, "auto" resolved for this driver).
   bool multisample_prepass() const { return multisample_; }
   // Bytes per pixel of the GL memory this pass keeps (the frame's targets are RsaaTargets'): the
   // pre-pass's codes and depth, the post-process's edge list or edge-pass depth, and, for a pass

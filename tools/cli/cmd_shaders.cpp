@@ -154,7 +154,9 @@ Action add_shaders_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"gl", "zero-to-one", "reverse-z"}));
   s.prepass = "jittered";  // files for one configuration: the engine picks what its driver can do
-  cmd->add_option("--prepass", s.prepass, "jittered (one draw per subsample) | msaa (one multisample draw)")
+  cmd->add_option("--prepass", s.prepass,
+                  "jittered (one draw per subsample) | msaa (one multisample draw of the table's samples, then the "
+                  "record passes; a union pattern's two draws need the rsaa::pass library, RsaaPass)")
       ->capture_default_str()
       ->check(CLI::IsMember({"jittered", "msaa"}));
   cmd->add_option("--first-unit", s.prepass_first_unit, "First of the pre-pass's three texture units")
