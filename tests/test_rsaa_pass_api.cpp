@@ -1089,60 +1089,66 @@ TEST_F(RsaaPassApi, ZeroToOneAndReverseZDepthGiveTheDefaultMasks) {
   const GpuScene gpu(scene);
   const SceneRenderer renderer;
   const View gl_view = make_view(choose_camera(scene, std::nullopt), width, height);
-  std::vector<std::vector<std::uint32_t>> masks;
-  for (const char* depth : {"gl", "zero-to-one", "reverse-z"}) {
-    const bool zero_to_one = std::string(depth) != "gl", reverse = std::string(depth) == "reverse-z";
-    View view = gl_view;
-    if (zero_to_one) {
-      glm::mat4 remap(1.0f);  // clip z' = (z + w) / 2, or w - (z + w) / 2 for reverse Z
-      remap[2][2] = reverse ? -0.5f : 0.5f;
-      remap[3][2] = 0.5f;
-      view.projection = remap * gl_view.projection;
-      glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  // Every pre-pass: the records' depths (multisample and "records") follow the convention too.
+  for (const char* pre_pass : {"jittered", "records", "msaa"}) {
+    SCOPED_TRACE(pre_pass);
+    std::vector<std::vector<std::uint32_t>> masks;
+    for (const char* depth : {"gl", "zero-to-one", "reverse-z"}) {
+      const bool zero_to_one = std::string(depth) != "gl", reverse = std::string(depth) == "reverse-z";
+      View view = gl_view;
+      if (zero_to_one) {
+        glm::mat4 remap(1.0f);  // clip z' = (z + w) / 2, or w - (z + w) / 2 for reverse Z
+        remap[2][2] = reverse ? -0.5f : 0.5f;
+        remap[3][2] = 0.5f;
+        view.projection = remap * gl_view.projection;
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+      }
+      const GLenum depth_func = reverse ? GL_GREATER : GL_LESS;
+      RsaaTargets targets(width, height);
+      const glm::vec3 background = gpu.background();
+      targets.clear(&background.x, reverse ? 0.0f : 1.0f);
+      targets.bind();
+      SceneRenderer::draw(gpu, view, {0.0f, 0.0f}, renderer.gbuffer_program(), depth_func);
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      RsaaSettings settings;
+      settings.depth = depth;
+      settings.output_mask = true;
+      settings.prepass = pre_pass;
+      if (settings.prepass == "msaa") settings.pattern = "gl4x";
+      RsaaPass pass(settings, width, height);
+      const RsaaFrame frame = targets.frame(view.inverse_projection());
+      pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
+        SceneRenderer::draw(gpu, view, jitter, program, depth_func);
+      });
+      const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+      const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
+      pass.resolve(frame, output.get(), mask.get());
+      masks.push_back(read_back_uints(mask.get(), width, height));
+      if (zero_to_one) {
+        // The setting must match the GL and the projection.
+        RsaaSettings other = settings;
+        other.depth = reverse ? "zero-to-one" : "reverse-z";
+        RsaaPass wrong_order(other, width, height);
+        EXPECT_NE(invalid_argument_of([&] { wrong_order.resolve(frame, output.get()); }).find("RsaaSettings::depth"),
+                  std::string::npos);
+        other.depth = "gl";
+        RsaaPass wrong_clip(other, width, height);
+        EXPECT_NE(invalid_argument_of([&] { wrong_clip.resolve(frame, output.get()); }).find("GL_NEGATIVE_ONE_TO_ONE"),
+                  std::string::npos);
+      }
+      glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     }
-    const GLenum depth_func = reverse ? GL_GREATER : GL_LESS;
-    RsaaTargets targets(width, height);
-    const glm::vec3 background = gpu.background();
-    targets.clear(&background.x, reverse ? 0.0f : 1.0f);
-    targets.bind();
-    SceneRenderer::draw(gpu, view, {0.0f, 0.0f}, renderer.gbuffer_program(), depth_func);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    RsaaSettings settings;
-    settings.depth = depth;
-    settings.output_mask = true;
-    RsaaPass pass(settings, width, height);
-    const RsaaFrame frame = targets.frame(view.inverse_projection());
-    pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
-      SceneRenderer::draw(gpu, view, jitter, program, depth_func);
-    });
-    const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
-    const gl::Texture mask = gl::make_texture_2d(GL_R32UI, width, height);
-    pass.resolve(frame, output.get(), mask.get());
-    masks.push_back(read_back_uints(mask.get(), width, height));
-    if (zero_to_one) {
-      // The setting must match the GL and the projection.
-      RsaaSettings other = settings;
-      other.depth = reverse ? "zero-to-one" : "reverse-z";
-      RsaaPass wrong_order(other, width, height);
-      EXPECT_NE(invalid_argument_of([&] { wrong_order.resolve(frame, output.get()); }).find("RsaaSettings::depth"),
-                std::string::npos);
-      other.depth = "gl";
-      RsaaPass wrong_clip(other, width, height);
-      EXPECT_NE(invalid_argument_of([&] { wrong_clip.resolve(frame, output.get()); }).find("GL_NEGATIVE_ONE_TO_ONE"),
-                std::string::npos);
+    const std::uint32_t all_similar = std::string(pre_pass) == "msaa" ? 15u : 255u;
+    int edges = 0;
+    for (std::uint32_t m : masks[0]) edges += m != all_similar;
+    EXPECT_GT(edges, 200);
+    for (std::size_t k = 1; k < masks.size(); ++k) {
+      int differing = 0;
+      for (std::size_t p = 0; p < masks[0].size(); ++p) differing += masks[0][p] != masks[k][p];
+      // Float ties only: depth is stored with another precision per convention.
+      EXPECT_LE(differing, edges / 100) << "convention " << k;
+      std::printf("depth convention %zu: %d of %d edge masks differ from OpenGL's default\n", k, differing, edges);
     }
-    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-  }
-  constexpr std::uint32_t all_similar = 255u;
-  int edges = 0;
-  for (std::uint32_t m : masks[0]) edges += m != all_similar;
-  EXPECT_GT(edges, 200);
-  for (std::size_t k = 1; k < masks.size(); ++k) {
-    int differing = 0;
-    for (std::size_t p = 0; p < masks[0].size(); ++p) differing += masks[0][p] != masks[k][p];
-    // Float ties only: depth is stored with another precision per convention.
-    EXPECT_LE(differing, edges / 100) << "convention " << k;
-    std::printf("depth convention %zu: %d of %d edge masks differ from OpenGL's default\n", k, differing, edges);
   }
   gl::check("depth conventions");
 }
