@@ -46,8 +46,11 @@
 //                   (with material_edges: rsaa_prepass_code(..., primitive, material))
 // (shaders/rsaa_prepass.glsl documents them; rsaa_face_normal(view_position) gives the face
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
-// frame's geometry; it is called once per subsample (jittered pre-pass) or once (multisample;
-// twice for a union pattern). Before each call the pass binds its framebuffer, the viewport, the
+// frame's geometry; it is called once per subsample (jittered pre-pass and "records") or once
+// (multisample; twice for a union pattern), so draw the whole frame in every call. With the
+// multisample or "records" pre-pass and material_edges, prepass_glsl() declares a second fragment
+// output (location 1, the material, written by rsaa_prepass_code()): the engine's pre-pass stage
+// must not declare one there. Before each call the pass binds its framebuffer, the viewport, the
 // pre-pass state below, the uniform block at settings.uniform_binding and three textures (and its
 // nearest sampler objects) at units settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
 // set culling for its geometry, but must draw with the colour mask, depth test, function and
