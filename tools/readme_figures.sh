@@ -9,7 +9,7 @@
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
 #   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
 #   --only cost: just the timing steps (post-process at 1280x720, the culled pre-pass, the
-#            multisample pre-pass and the union pattern, how cost grows, the bench; about 20
+#            multisample pre-pass and the union pattern, how cost grows, the bench; about 10
 #            minutes), to measure them again on a quiet machine.
 #   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
 set -euo pipefail
