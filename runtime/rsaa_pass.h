@@ -77,9 +77,10 @@
 //
 // The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling,
 // logic op and rasterizer discard off, filled polygons, colour mask: the subsample's channel
-// (jittered) or all (multisample), for the multisample pre-pass sample shading and GL_MULTISAMPLE
-// on, sample mask, coverage value and alpha to coverage off, and stencil test off, or,
-// with prepass_cull "neighbours", on (GL_EQUAL 1, no stencil writes).
+// (jittered) or all (multisample, "records"), GL_MULTISAMPLE on and sample shading off (the
+// multisample pre-pass shades once per pixel), sample mask, coverage value and alpha to coverage
+// off, and stencil test off, or, with prepass_cull "neighbours", on (GL_EQUAL 1, no stencil
+// writes).
 //
 // GL STATE. Every call restores what it changes: framebuffer bindings, the viewports, depth
 // ranges and scissor tests of every viewport index, current program, depth test/function/mask,
@@ -87,9 +88,11 @@
 // sample shading, GL_MULTISAMPLE, sample mask and coverage, alpha to coverage/one, logic op, the
 // generic uniform buffer binding, the vertex array, the textures and sampler objects bound to units 0-8 and to
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
-// shader storage buffer at binding 0 (and the generic one), image units 0 and 1 and the
-// indirect-dispatch buffer; the engine's scissor, masks, culling and samplers do not reach the
-// pass. (A program the engine deleted while current cannot be restored: none is current after.)
+// shader storage buffer at binding 0 (and the generic one), the image units it binds (0-7 at most:
+// outputs, codes, records) and the indirect-dispatch buffer, and for the record passes of the
+// multisample and "records" pre-passes their six texture units too; the engine's scissor, masks,
+// culling and samplers do not reach the pass. (A program the engine deleted while current cannot
+// be restored: none is current after.)
 // A GL error already set when a call begins is the engine's: the call throws std::runtime_error
 // (gl::GlError) saying so, before it does anything.
 // Textures and programs they create belong to the RsaaPass object.

@@ -1,7 +1,8 @@
 // The runtime's own RSAA pre-pass fragment shader (after scene.vert and scene.geom, which gives
 // the exact face normal): the engine-facing functions of rsaa_prepass.glsl, called as an engine
-// would. Jittered: drawn once per subsample; RSAA_PREPASS_MSAA: once (twice for a union
-// pattern), run per sample.
+// would. Jittered: drawn once per subsample, writing codes; RSAA_PREPASS_MSAA: once (twice for a
+// union pattern), shaded once per pixel, writing surface records; RSAA_PREPASS_RECORDS: once per
+// subsample, writing surface records.
 #include "rsaa_prepass.glsl"
 
 in FragmentData {

@@ -348,8 +348,18 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glDisablei(GL_SCISSOR_TEST, 1);  // on for index 0 (above)
   RsaaSettings settings;
   settings.prepass_cull = "neighbours";  // the pass's stencil state too
-  RsaaPass pass(settings, kWidth, kHeight);
+  // The multisample and records pre-passes too: their record passes bind texture units 0-5 (an
+  // engine texture on unit 2, its sampler object on unit 0) and more image units.
+  RsaaSettings multisample, records;
+  multisample.pattern = "gl4x", multisample.prepass = "msaa", records.prepass = "records";
   const RsaaFrame frame = scene.frame();
+  const gl::Texture other_output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  for (const RsaaSettings& each : {multisample, records}) {
+    RsaaPass other(each, kWidth, kHeight);
+    scene.render_subsamples(other);
+    other.resolve(frame, other_output.get());
+  }
+  RsaaPass pass(settings, kWidth, kHeight);
   scene.render_subsamples(pass);
   const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
   pass.resolve(frame, output.get());
