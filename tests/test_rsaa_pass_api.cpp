@@ -156,10 +156,16 @@ TEST_F(RsaaPassApi, AnEnginesOwnShadersGiveThePassProgramsMasks) {
   multisample.prepass = "msaa";
   RsaaSettings material;  // the engine's own shaders pass the draw's material
   material.material_edges = true;
+  // Records with materials: the engine's fragment stage writes location 1 through the include.
+  RsaaSettings multisample_material = multisample, records_material = material;
+  multisample_material.material_edges = true;
+  records_material.prepass = "records";
   for (const auto& [scene, settings] : {std::pair{"builtin:default", RsaaSettings{}},
                                         std::pair{"builtin:edges", RsaaSettings{}},
                                         std::pair{"builtin:default", multisample},
-                                        std::pair{"builtin:coplanar", material}}) {
+                                        std::pair{"builtin:coplanar", material},
+                                        std::pair{"builtin:coplanar", multisample_material},
+                                        std::pair{"builtin:coplanar", records_material}}) {
     const MaskRun run = masks_both_ways(scene, settings, 160, 120);
     int edges = 0, differing = 0;
     for (std::size_t i = 0; i < run.own_program.size(); ++i) {
