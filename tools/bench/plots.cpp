@@ -31,6 +31,39 @@ cv::Scalar family_colour(const TechniqueOptions& o) {
 }
 cv::Scalar family_colour(const TechniqueResult& r) { return family_colour(r.options); }
 
+// The k-th row of one family in a line plot: the family's colour, then darker and lighter shades
+// of it, so that rows of one family (five RSAA rows in the growth plots) stay apart.
+cv::Scalar family_shade(const cv::Scalar& colour, int k) {
+  constexpr double kShades[] = {0.0, -0.45, 0.45, -0.7, 0.65};
+  const double shade = kShades[k % 5];
+  cv::Scalar out;
+  for (int c = 0; c < 3; ++c) out[c] = shade < 0 ? colour[c] * (1 + shade) : colour[c] + (235 - colour[c]) * shade;
+  return out;
+}
+
+// Marker k: a disc, a square, a triangle, a diamond, a cross.
+void draw_marker(cv::Mat& canvas, cv::Point p, int k, const cv::Scalar& colour) {
+  const int r = 4;
+  switch (k % 5) {
+    case 0: cv::circle(canvas, p, r - 1, colour, -1, cv::LINE_AA); break;
+    case 1: cv::rectangle(canvas, p - cv::Point(r - 1, r - 1), p + cv::Point(r - 1, r - 1), colour, -1); break;
+    case 2: {
+      const std::vector<cv::Point> triangle = {p + cv::Point(0, -r), p + cv::Point(r, r), p + cv::Point(-r, r)};
+      cv::fillConvexPoly(canvas, triangle, colour, cv::LINE_AA);
+      break;
+    }
+    case 3: {
+      const std::vector<cv::Point> diamond = {p + cv::Point(0, -r), p + cv::Point(r, 0), p + cv::Point(0, r),
+                                              p + cv::Point(-r, 0)};
+      cv::fillConvexPoly(canvas, diamond, colour, cv::LINE_AA);
+      break;
+    }
+    default:
+      cv::line(canvas, p + cv::Point(-r, -r), p + cv::Point(r, r), colour, 2, cv::LINE_AA);
+      cv::line(canvas, p + cv::Point(-r, r), p + cv::Point(r, -r), colour, 2, cv::LINE_AA);
+  }
+}
+
 // "R8 sadp a1" for rsaa 8x sadp auth1, the label itself otherwise. Every option the label names
 // stays (cap1.5 ms sc, msaa, 1-pass, a table's name), so that two rows never share a legend entry.
 std::string short_label(const std::string& label, const TechniqueOptions& o) {
@@ -149,7 +182,7 @@ void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::strin
   for (const GrowthSlope& slope : growth_slopes(results))
     if (slope.axis == axis) labels.push_back(short_label(slope.label, slope.options));
   const int label_width = label_column(labels, 0.4, 160);
-  const int right = label_width + 170, width = 730 + right, height = 600, left = 70, top = 50, bottom = 60;
+  const int right = label_width + 182, width = 730 + right, height = 600, left = 70, top = 50, bottom = 60;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   double x_lo = 1e300, x_hi = 0, y_lo = 1e300, y_hi = 0;
   for (const auto* p : points) {
@@ -197,22 +230,26 @@ void plot_growth(const GrowthResults& results, GrowthAxis axis, const std::strin
   int legend_y = top + 10;
   std::vector<std::string> drawn;
   const auto slopes = growth_slopes(results);
+  std::map<std::string, int> family_rows;  // rows drawn so far per family colour
   for (const GrowthSlope& s : slopes) {
     if (s.axis != axis) continue;
-    const cv::Scalar colour = family_colour(s.options);
+    const cv::Scalar base = family_colour(s.options);
+    const int k = family_rows[cv::format("%g,%g,%g", base[0], base[1], base[2])]++;
+    const cv::Scalar colour = family_shade(base, k);
     const GrowthPoint* previous = nullptr;
     for (const auto* p : points) {
       if (p->label != s.label) continue;
-      cv::circle(canvas, {px(p->x()), py(p->frame_ms)}, 3, colour, -1, cv::LINE_AA);
       if (previous)
         cv::line(canvas, {px(previous->x()), py(previous->frame_ms)}, {px(p->x()), py(p->frame_ms)}, colour, 1,
                  cv::LINE_AA);
+      draw_marker(canvas, {px(p->x()), py(p->frame_ms)}, k, colour);
       previous = p;
     }
-    text(canvas, short_label(s.label, s.options), {width - right + 10, legend_y}, 0.4, colour);
+    draw_marker(canvas, {width - right + 8, legend_y - 4}, k, colour);
+    text(canvas, short_label(s.label, s.options), {width - right + 16, legend_y}, 0.4, colour);
     char line[96];
     std::snprintf(line, sizeof line, "exponent %.2f", s.exponent);
-    text(canvas, line, {width - right + 10 + label_width, legend_y}, 0.4, colour);
+    text(canvas, line, {width - right + 22 + label_width, legend_y}, 0.4, colour);
     legend_y += 17;
   }
   write_canvas(canvas, path);
