@@ -561,14 +561,13 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   // The compute post-process and the record passes of the pre-passes that write surface records
   // list pixels (one list buffer, used by each in turn). The list packs a pixel's x and y into 16
   // bits each.
-  const bool writes_records = multisample_ || layered_;
-  if ((settings.post == "compute" || writes_records) && (width > 65536 || height > 65536))
-    throw std::invalid_argument("RSAA " + (writes_records ? "prepass " + settings.prepass : std::string("post compute")) +
+  if ((settings.post == "compute" || writes_records()) && (width > 65536 || height > 65536))
+    throw std::invalid_argument("RSAA " + (writes_records() ? "prepass " + settings.prepass : std::string("post compute")) +
                                 ": the pixel list packs coordinates into 16 bits; a " + std::to_string(width) + "x" +
                                 std::to_string(height) + " image needs " +
-                                (writes_records ? "the jittered pre-pass" : "post edges"));
+                                (writes_records() ? "the jittered pre-pass" : "post edges"));
   const std::string list_defines = "#define RSAA_LIST_BINDING " + std::to_string(kEdgeListBinding) + "\n";
-  if (settings.post == "compute" || writes_records) {
+  if (settings.post == "compute" || writes_records()) {
     gl_->list_size_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_list_size.comp")}},
                                               defines + list_defines, "RSAA pixel list size");
     // Every pixel of the image, or as many rows as the driver's storage block holds (8192 x 4096
@@ -577,7 +576,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
   }
-  if (writes_records) {
+  if (writes_records()) {
     const int record_unit = record_first_unit(settings.prepass_first_unit);
     GLint compute_units = 0;
     glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &compute_units);
@@ -615,7 +614,7 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   const double code_bytes = settings_.code_bits / 8.0;
   double bytes = 0.0;
   bytes += (n + 3) / 4 * 4 * code_bytes;  // RGBA code texels
-  if (multisample_ || layered_)
+  if (writes_records())
     // a surface record, a 32-bit depth and (material edges) a material a subsample (both draws of a union)
     bytes += n * (8.0 + 4.0 + (settings_.material_edges ? 4.0 : 0.0));
   else

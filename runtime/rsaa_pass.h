@@ -328,6 +328,8 @@ class RsaaPass {
   bool multisample_ = false;
   bool union_ = false;   // the multisample pre-pass as two draws of half the samples (union pattern)
   bool layered_ = false;  // settings.prepass == "records": jittered draws writing surface records
+  // The pre-pass writes surface records that the record passes turn into codes.
+  bool writes_records() const { return multisample_ || layered_; }
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
