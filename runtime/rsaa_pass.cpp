@@ -32,11 +32,11 @@ struct RsaaPass::Objects {
   // The pre-passes that write surface records: the records (RG32UI), depths and, with material
   // edges, materials (R32UI), sample i (multisample) or layer i (RsaaSettings::prepass "records")
   // = subsample i; the record passes turn them into `codes`.
-  gl::Texture records, record_depths, record_materials;
+  gl::Texture records, record_depths;
   gl::Framebuffer multisample_target;
   // Union pre-pass (2m subsamples from two m-sample draws): the shifted draw's, sample i =
   // subsample m + i of the pixel that contains the point it sees.
-  gl::Texture records2, record_depths2, record_materials2;
+  gl::Texture records2, record_depths2;
   gl::Framebuffer multisample_target2;
   gl::Program record_list_program, record_codes_program;
   GLint record_list_group[3] = {1, 1, 1};
@@ -111,9 +111,9 @@ constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
 constexpr int kFirstCodeImageUnit = 2;
 // The record passes of the multisample pre-pass write the codes through the same image units.
 constexpr GLint kRecordRowsLocation = 0;
-// The record passes' six texture units (records, depths and materials of each draw): 0-5, or
-// after the pre-pass's own three when those start below 6.
-constexpr int kRecordUnits = 6;
+// The record passes' four texture units (records and depths of each draw): 0-3, or after the
+// pre-pass's own three when those start below 4.
+constexpr int kRecordUnits = 4;
 int record_first_unit(int prepass_first_unit) {
   return prepass_first_unit >= kRecordUnits ? 0 : prepass_first_unit + 3;
 }
@@ -491,28 +491,18 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   for (int k = 0; k < (n + 3) / 4; ++k) gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
   if (multisample_) {
     const int m = union_ ? n / 2 : n;
-    const auto make_draw_target = [&](gl::Texture& records, gl::Texture& depth, gl::Texture& materials) {
+    const auto make_draw_target = [&](gl::Texture& records, gl::Texture& depth) {
       records = gl::make_texture_2d_multisample(GL_RG32UI, width, height, m);
       depth = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, m);
-      std::vector<gl::Attachment> colours = {{records.get()}};
-      if (settings.material_edges) {
-        materials = gl::make_texture_2d_multisample(GL_R32UI, width, height, m);
-        colours.push_back({materials.get()});
-      }
-      return gl::make_framebuffer(colours, {depth.get()});
+      return gl::make_framebuffer({{records.get()}}, {depth.get()});
     };
-    gl_->multisample_target = make_draw_target(gl_->records, gl_->record_depths, gl_->record_materials);
-    if (union_)
-      gl_->multisample_target2 = make_draw_target(gl_->records2, gl_->record_depths2, gl_->record_materials2);
+    gl_->multisample_target = make_draw_target(gl_->records, gl_->record_depths);
+    if (union_) gl_->multisample_target2 = make_draw_target(gl_->records2, gl_->record_depths2);
   } else if (layered_) {
     gl_->records = gl::make_texture_2d_array(GL_RG32UI, width, height, n);
     gl_->record_depths = gl::make_texture_2d_array(GL_DEPTH_COMPONENT32F, width, height, n);
-    if (settings.material_edges) gl_->record_materials = gl::make_texture_2d_array(GL_R32UI, width, height, n);
-    for (int i = 0; i < n; ++i) {
-      std::vector<gl::Attachment> colours = {{gl_->records.get(), i}};
-      if (settings.material_edges) colours.push_back({gl_->record_materials.get(), i});
-      gl_->subsample_targets.push_back(gl::make_framebuffer(colours, {gl_->record_depths.get(), i}));
-    }
+    for (int i = 0; i < n; ++i)
+      gl_->subsample_targets.push_back(gl::make_framebuffer({{gl_->records.get(), i}}, {gl_->record_depths.get(), i}));
   } else {
     gl_->subsample_depth = gl::make_texture_2d(cull_ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F, width, height);
     const gl::Attachment depth{gl_->subsample_depth.get()};
@@ -592,7 +582,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     glGetIntegerv(GL_MAX_IMAGE_SAMPLES, &image_samples);
     glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_units);
     make_record_programs((layered_ || image_samples >= (union_ ? n / 2 : n)) &&
-                         kFirstCodeImageUnit + int(gl_->codes.size()) + 4 <= image_units);
+                         kFirstCodeImageUnit + int(gl_->codes.size()) + 2 <= image_units);
   }
   if (settings.post == "compute") {
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
@@ -615,8 +605,7 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   double bytes = 0.0;
   bytes += (n + 3) / 4 * 4 * code_bytes;  // RGBA code texels
   if (writes_records())
-    // a surface record, a 32-bit depth and (material edges) a material a subsample (both draws of a union)
-    bytes += n * (8.0 + 4.0 + (settings_.material_edges ? 4.0 : 0.0));
+    bytes += n * (8.0 + 4.0);  // a surface record and a 32-bit depth a subsample (both draws of a union)
   else
     bytes += cull_ ? 8.0 : 4.0;  // the draws' depth (+ stencil)
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
@@ -675,13 +664,12 @@ void RsaaPass::codes_from_records() {
   const int record_unit = record_first_unit(settings_.prepass_first_unit);
   const int code_images = int(gl_->codes.size());
   std::vector<int> image_units, units;
-  for (int k = 0; k < code_images + (gl_->record_images ? 4 : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  for (int k = 0; k < code_images + (gl_->record_images ? 2 : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
   for (int k = 0; k < kRecordUnits; ++k) units.push_back(record_unit + k);
   const gl::SavedState saved(units);
   const gl::SavedComputeState saved_compute({kEdgeListBinding}, image_units);
-  const GLuint records[kRecordUnits] = {gl_->records.get(),          gl_->record_depths.get(),
-                                        gl_->records2.get(),         gl_->record_depths2.get(),
-                                        gl_->record_materials.get(), gl_->record_materials2.get()};
+  const GLuint records[kRecordUnits] = {gl_->records.get(), gl_->record_depths.get(), gl_->records2.get(),
+                                        gl_->record_depths2.get()};
   glBindTextures(GLuint(record_unit), kRecordUnits, records);
   const GLboolean layered = layered_ ? GL_TRUE : GL_FALSE;  // array textures: every layer
   const std::vector<GLuint> samplers(kRecordUnits, gl_->nearest.get());
@@ -690,13 +678,9 @@ void RsaaPass::codes_from_records() {
     glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
                        GL_WRITE_ONLY, code_format(settings_.code_bits));
   if (gl_->record_images)
-    for (int d = 0; d < (union_ ? 2 : 1); ++d) {
+    for (int d = 0; d < (union_ ? 2 : 1); ++d)
       glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + d), records[2 * d], 0, layered, 0, GL_READ_ONLY,
                          GL_RG32UI);
-      if (settings_.material_edges)
-        glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + 2 + d), records[4 + d], 0, layered, 0,
-                           GL_READ_ONLY, GL_R32UI);
-    }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
   // Rounds of rows when the list cannot hold every pixel, as the compute post-process does.

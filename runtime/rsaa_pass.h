@@ -48,9 +48,9 @@
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
 // frame's geometry; it is called once per subsample (jittered pre-pass and "records") or once
 // (multisample; twice for a union pattern), so draw the whole frame in every call. With the
-// multisample or "records" pre-pass and material_edges, prepass_glsl() declares a second fragment
-// output (location 1, the material, written by rsaa_prepass_code()): the engine's pre-pass stage
-// must not declare one there. Before each call the pass binds its framebuffer, the viewport, the
+// multisample or "records" pre-pass and material_edges the record keeps the primitive's low 24
+// bits and the material's low 8 (materials numbered below 256 compare exactly;
+// docs/conventions.md). Before each call the pass binds its framebuffer, the viewport, the
 // pre-pass state below, the uniform block at settings.uniform_binding and three textures (and its
 // nearest sampler objects) at units settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
 // set culling for its geometry, but must draw with the colour mask, depth test, function and
@@ -90,7 +90,7 @@
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
 // shader storage buffer at binding 0 (and the generic one), the image units it binds (0-7 at most:
 // outputs, codes, records) and the indirect-dispatch buffer, and for the record passes of the
-// multisample and "records" pre-passes their six texture units too; the engine's scissor, masks,
+// multisample and "records" pre-passes their four texture units too; the engine's scissor, masks,
 // culling and samplers do not reach the pass. (A program the engine deleted while current cannot
 // be restored: none is current after.)
 // A GL error already set when a call begins is the engine's: the call throws std::runtime_error
@@ -215,7 +215,7 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
                                 bool union_pattern = false);
 // The #define lines the multisample pre-pass's record passes (shaders/rsaa_prepass_list.comp,
 // rsaa_prepass_codes.comp) need beside rsaa_shader_defines(): their resources (texture units from
-// `first_record_unit`: records, depths, the union's second draw's, then materials; code images
+// `first_record_unit`: records, depths, the union's second draw's; code images
 // from `first_code_image`; the pixel list at storage binding `list_binding`) and where each
 // subsample's point lies in its pixel. Needs no GL.
 std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_record_unit, int first_code_image,

@@ -128,13 +128,30 @@ uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 vi
 // 2 x 16 bits, its sign flipped to z >= 0: the similarity measures use |n . r| only). y = 0: no
 // surface covers the sample (the records are cleared to 0; an encoded normal is never 0);
 // y = 1: a NaN normal (compares as similar, as in the jittered pre-pass). With
-// RSAA_MATERIAL_EDGES the material goes to a second target (location 1), written by
-// rsaa_prepass_code() itself, so that the engine's fragment stage is the same in every mode.
-uvec2 rsaa_surface_record(vec3 view_face_normal, uint primitive) {
+// RSAA_MATERIAL_EDGES x packs the primitive's low 24 bits and the material's low 8 bits above them,
+// so that the draw still writes 8 bytes a sample (a second target for the material cost the draw
+// about a fifth of its time on llvmpipe, and the first record pass four more loads a pixel). The
+// record passes compare those bits with the centre's: primitives whose values differ only above
+// bit 24, or materials only above bit 8, compare as the same there (the jittered pre-pass compares
+// whole values); materials numbered below 256 compare exactly.
+#ifdef RSAA_MATERIAL_EDGES
+#define RSAA_RECORD_PRIMITIVE_BITS 0x00ffffffu
+#else
+#define RSAA_RECORD_PRIMITIVE_BITS 0xffffffffu
+#endif
+
+// What a record's x holds for a surface of this primitive and material (material 0 without
+// material edges).
+uint rsaa_record_surface(uint primitive, uint material) {
+  return (primitive & RSAA_RECORD_PRIMITIVE_BITS) | (material << 24u);
+}
+
+uvec2 rsaa_surface_record(vec3 view_face_normal, uint primitive, uint material) {
+  uint surface = rsaa_record_surface(primitive, material);
   vec3 n = view_face_normal.z < 0.0 ? -view_face_normal : view_face_normal;
-  if (any(isnan(n))) return uvec2(primitive, 1u);
+  if (any(isnan(n))) return uvec2(surface, 1u);
   uvec2 q = rsaa_encode_normal(vec3(clamp(n.xy, -1.0, 1.0), n.z));
-  return uvec2(primitive, q.x | (q.y << 16u));
+  return uvec2(surface, q.x | (q.y << 16u));
 }
 
 bool rsaa_record_is_surface(uvec2 record) { return record.y != 0u; }
@@ -144,16 +161,10 @@ vec3 rsaa_record_normal(uvec2 record) {
   return rsaa_decode_normal(uvec2(record.y & 0xffffu, record.y >> 16u));
 }
 
-#if (defined(RSAA_PREPASS_MSAA) || defined(RSAA_PREPASS_RECORDS)) && defined(RSAA_MATERIAL_EDGES) && \
-    !defined(RSAA_PREPASS_COMPUTE)
-layout(location = 1) out uint rsaa_material_record;
-#endif
-
 #ifndef RSAA_PREPASS_COMPUTE
 // What the engine's fragment stage writes (to location 0, a uvec4 output): jittered, the code of
 // the subsample this draw samples (all four channels carry it: the pass masks the ones of other
-// subsamples); multisample, the surface record of the samples the fragment covers (.xy; with
-// material edges the material goes to location 1 meanwhile).
+// subsamples); multisample, the surface record of the samples the fragment covers (.xy).
 #ifdef RSAA_MATERIAL_EDGES
 uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitive, uint material) {
 #else
@@ -161,10 +172,7 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
   const uint material = 0u;
 #endif
 #if defined(RSAA_PREPASS_MSAA) || defined(RSAA_PREPASS_RECORDS)
-#ifdef RSAA_MATERIAL_EDGES
-  rsaa_material_record = material;
-#endif
-  return uvec4(rsaa_surface_record(view_face_normal, primitive), 0u, 0u);
+  return uvec4(rsaa_surface_record(view_face_normal, primitive, material), 0u, 0u);
 #else
   return uvec4(rsaa_subsample_code(ivec2(gl_FragCoord.xy), rsaa_subsample, view_position, view_face_normal, primitive,
                                    material));

@@ -19,9 +19,7 @@ void main() {
     float depth = rsaa_record_depth(i, raster, sample_index);
     vec3 point = rsaa_view_position(vec2(pixel) + rsaa_subsample_window[i], depth, rsaa_inverse_projection,
                                     rsaa_viewport);
-    codes[i] = !rsaa_record_is_surface(record) ? 0u
-                                       : rsaa_subsample_code(pixel, i, point, rsaa_record_normal(record), record.x,
-                                                             rsaa_record_material(i, raster, sample_index));
+    codes[i] = rsaa_record_is_surface(record) ? rsaa_record_code(pixel, i, point, record) : 0u;
   }
   rsaa_store_codes(pixel, codes);
 }

@@ -9,7 +9,7 @@ layout(local_size_x = 64, local_size_y = 4) in;
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, rsaa_rows.x);
   if (pixel.x >= int(rsaa_viewport.x) || pixel.y >= rsaa_rows.y) return;
-  uvec2 centre = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+  uint centre_surface = rsaa_centre_record_surface(texelFetch(rsaa_centre_primitive, pixel, 0).xy);
   uint codes[RSAA_SAMPLE_COUNT];
   bool listed = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
@@ -18,14 +18,8 @@ void main() {
     codes[i] = 1u;
     if (!rsaa_record_at(pixel, i, raster, sample_index)) continue;
     uvec2 record = rsaa_record(i, raster, sample_index);
-#ifdef RSAA_MATERIAL_EDGES
-    bool centres_triangle =
-        record.x != 0u && uvec2(record.x, rsaa_record_material(i, raster, sample_index)) == centre;
-#else
-    bool centres_triangle = record.x != 0u && record.x == centre.x;
-#endif
     if (!rsaa_record_is_surface(record)) codes[i] = 0u;
-    else if (!centres_triangle) listed = true;
+    else if (!rsaa_record_on_centres_triangle(record, centre_surface)) listed = true;
   }
   rsaa_store_codes(pixel, codes);
   if (!listed) return;

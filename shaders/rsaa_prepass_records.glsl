@@ -14,11 +14,10 @@
 // Defines expected before inclusion, beside rsaa_prepass.glsl's:
 //   RSAA_PREPASS_MSAA, RSAA_PREPASS_MSAA_UNION + RSAA_MS_SAMPLES (a union pattern), or
 //   RSAA_PREPASS_RECORDS
-//   RSAA_RECORD_FIRST_UNIT   texture units: records, depths, (union) the shifted draw's, then
-//                            with RSAA_MATERIAL_EDGES the materials of each draw (+ 4, + 5)
+//   RSAA_RECORD_FIRST_UNIT   texture units: records, depths, (union) the shifted draw's
 //   RSAA_RECORD_CODE_IMAGES  first image unit of the code images (ceil(RSAA_SAMPLE_COUNT / 4))
-//   RSAA_RECORD_IMAGES       (optional) first image unit of the records, then (+ 2) the
-//                            materials, read as multisample images (one per draw; where the
+//   RSAA_RECORD_IMAGES       (optional) first image unit of the records, read as
+//                            multisample images (one per draw; where the
 //                            driver's GL_MAX_IMAGE_SAMPLES and image units allow: on llvmpipe an
 //                            image load costs less than a texel fetch)
 //   RSAA_LIST_BINDING        the list's storage buffer (rsaa_post_list.glsl)
@@ -58,15 +57,6 @@ layout(binding = RSAA_RECORD_FIRST_UNIT + 3) uniform RSAA_RECORD_SAMPLER rsaa_re
 #endif
 #ifdef RSAA_RECORD_IMAGES
 layout(binding = RSAA_RECORD_IMAGES, rg32ui) uniform readonly RSAA_RECORD_UIMAGE rsaa_record_images[2];
-#ifdef RSAA_MATERIAL_EDGES
-layout(binding = RSAA_RECORD_IMAGES + 2, r32ui) uniform readonly RSAA_RECORD_UIMAGE rsaa_material_images[2];
-#endif
-#endif
-#ifdef RSAA_MATERIAL_EDGES
-layout(binding = RSAA_RECORD_FIRST_UNIT + 4) uniform RSAA_RECORD_USAMPLER rsaa_record_materials;
-#ifdef RSAA_PREPASS_MSAA_UNION
-layout(binding = RSAA_RECORD_FIRST_UNIT + 5) uniform RSAA_RECORD_USAMPLER rsaa_record_materials2;
-#endif
 #endif
 #ifndef RSAA_PREPASS_MSAA_UNION
 #define RSAA_MS_SAMPLES RSAA_SAMPLE_COUNT
@@ -109,17 +99,34 @@ uvec2 rsaa_record(int i, ivec2 raster, int sample_index) {
 #endif
 }
 
-uint rsaa_record_material(int i, ivec2 raster, int sample_index) {
-#if defined(RSAA_MATERIAL_EDGES) && defined(RSAA_RECORD_IMAGES)
-  return RSAA_RECORD_LOAD(rsaa_material_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).x;
-#elif defined(RSAA_MATERIAL_EDGES)
-#ifdef RSAA_PREPASS_MSAA_UNION
-  if (i >= RSAA_MS_SAMPLES) return RSAA_RECORD_FETCH(rsaa_record_materials2, raster, sample_index).x;
-#endif
-  return RSAA_RECORD_FETCH(rsaa_record_materials, raster, sample_index).x;
+// What a record's x must hold to be on the centre's triangle: the centre primitive target's
+// texel (primitive, and with material edges material) as rsaa_record_surface() packs it.
+uint rsaa_centre_record_surface(uvec2 centre) {
+#ifdef RSAA_MATERIAL_EDGES
+  return rsaa_record_surface(centre.x, centre.y);
 #else
-  return 0u;
+  return rsaa_record_surface(centre.x, 0u);
 #endif
+}
+
+// Whether a record is on the centre's triangle (`centre_surface`: rsaa_centre_record_surface());
+// primitive 0 never is, as in the jittered pre-pass.
+bool rsaa_record_on_centres_triangle(uvec2 record, uint centre_surface) {
+  return (record.x & RSAA_RECORD_PRIMITIVE_BITS) != 0u && record.x == centre_surface;
+}
+
+// The code of subsample i of `pixel` whose record shows a surface at view-space `point`: the
+// jittered pre-pass's rsaa_subsample_code(), with the record's primitive and material widened to
+// the centre's where their stored bits agree with it, so that it decides as the listing pass did.
+uint rsaa_record_code(ivec2 pixel, int i, vec3 point, uvec2 record) {
+  uint primitive = record.x, material = 0u;
+#ifdef RSAA_MATERIAL_EDGES
+  uvec2 centre = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+  primitive &= RSAA_RECORD_PRIMITIVE_BITS;
+  if (primitive == (centre.x & RSAA_RECORD_PRIMITIVE_BITS)) primitive = centre.x;
+  material = (record.x >> 24u) == (centre.y & 0xffu) ? centre.y : ~centre.y;
+#endif
+  return rsaa_subsample_code(pixel, i, point, rsaa_record_normal(record), primitive, material);
 }
 
 float rsaa_record_depth(int i, ivec2 raster, int sample_index) {

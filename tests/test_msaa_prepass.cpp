@@ -171,8 +171,9 @@ TEST_F(MsaaPrePass, RecordsGiveTheJitteredMasks) {
 
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnEdgesScene) { expect_same_masks("builtin:edges"); }
 
-// Material edges (the renderer's default): the multisample pre-pass writes each sample's material
-// to a second target beside its record. The coplanar scene's parts differ by material only.
+// Material edges (the renderer's default): the multisample pre-pass folds the material into each
+// sample's record (the union pattern's draws write it to a second target: below). The coplanar
+// scene's parts differ by material only.
 TEST_F(MsaaPrePass, SameMasksAsJitteredWithMaterialEdges) {
   for (const char* scene : {"builtin:coplanar", "builtin:default"}) {
     RsaaSettings settings;
@@ -213,6 +214,13 @@ TEST_F(MsaaPrePass, UnionPatternAsTwoDrawsSameMasksAsJittered) {
     EXPECT_GT(c.edges_jittered, 1000u) << scene;
     EXPECT_LE(c.differing, 12u) << scene;
   }
+  // With material edges its draws write the materials to targets of their own (a shifted draw's
+  // samples belong to other pixels than the one it shades, so it cannot fold them into the
+  // records as one draw does).
+  settings.material_edges = true;
+  const MaskComparison c = compare_prepasses("builtin:coplanar", settings, 1);
+  EXPECT_GT(c.edges_jittered, 1000u);
+  EXPECT_LE(c.differing, 12u);
 }
 
 }  // namespace

@@ -156,7 +156,7 @@ TEST_F(RsaaPassApi, AnEnginesOwnShadersGiveThePassProgramsMasks) {
   multisample.prepass = "msaa";
   RsaaSettings material;  // the engine's own shaders pass the draw's material
   material.material_edges = true;
-  // Records with materials: the engine's fragment stage writes location 1 through the include.
+  // Records with materials: the include packs the material into the engine's record.
   RsaaSettings multisample_material = multisample, records_material = material;
   multisample_material.material_edges = true;
   records_material.prepass = "records";

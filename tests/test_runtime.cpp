@@ -93,18 +93,18 @@ TEST_F(Runtime, RsaaMemoryCountsEveryBufferItKeeps) {
   EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 20 + 16 + 4);
   settings.prepass_cull = "neighbours";  // depth and stencil
   EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 20 + 16 + 8);
-  // The multisample pre-pass (gl4x): the codes, and per sample a record (8), a depth (4) and with
-  // material edges a material (4); the pixel list of its record passes even without the compute
-  // post-process.
+  // The multisample pre-pass (gl4x): the codes, and per sample a record (8, with material edges
+  // the material packed in) and a depth (4); the pixel list of its record passes even without the
+  // compute post-process.
   RsaaSettings multisample;
   multisample.pattern = "gl4x", multisample.prepass = "msaa", multisample.material_edges = true;
-  EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 24 + 4 + 4 * 16 + list + 8);
+  EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 24 + 4 + 4 * 12 + list + 8);
   multisample.material_edges = false, multisample.post = "single";
   EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 20 + 4 + 4 * 12 + list);
   // d3d8x's jittered draws writing records: the same per subsample, in layers.
   RsaaSettings records;
   records.prepass = "records", records.material_edges = true;
-  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 16 + list + 8);
+  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 12 + list + 8);
 }
 
 TEST_F(Runtime, DriverPatternMatchesTheCheckedInGl4xTable) {
