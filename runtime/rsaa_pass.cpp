@@ -29,9 +29,9 @@ struct RsaaTargets::Objects {
 struct RsaaPass::Objects {
   std::vector<gl::Texture> codes;  // four subsamples per texel (RGBA), ceil(n / 4) textures
   gl::Texture subsample_depth, table;
-  // The pre-passes that write surface records: the records (RG32UI), depths and, with material
-  // edges, materials (R32UI), sample i (multisample) or layer i (RsaaSettings::prepass "records")
-  // = subsample i; the record passes turn them into `codes`.
+  // The pre-passes that write surface records: the records (RG32UI; with material edges the
+  // material packed in) and depths, sample i (multisample) or layer i (RsaaSettings::prepass
+  // "records") = subsample i; the record passes turn them into `codes`.
   gl::Texture records, record_depths;
   gl::Framebuffer multisample_target;
   // Union pre-pass (2m subsamples from two m-sample draws): the shifted draw's, sample i =
@@ -114,6 +114,8 @@ constexpr GLint kRecordRowsLocation = 0;
 // The record passes' four texture units (records and depths of each draw): 0-3, or after the
 // pre-pass's own three when those start below 4.
 constexpr int kRecordUnits = 4;
+// The record passes' image units for the records, one per draw (rsaa_record_images[2]).
+constexpr int kRecordImages = 2;
 int record_first_unit(int prepass_first_unit) {
   return prepass_first_unit >= kRecordUnits ? 0 : prepass_first_unit + 3;
 }
@@ -582,7 +584,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     glGetIntegerv(GL_MAX_IMAGE_SAMPLES, &image_samples);
     glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_units);
     make_record_programs((layered_ || image_samples >= (union_ ? n / 2 : n)) &&
-                         kFirstCodeImageUnit + int(gl_->codes.size()) + 2 <= image_units);
+                         kFirstCodeImageUnit + int(gl_->codes.size()) + kRecordImages <= image_units);
   }
   if (settings.post == "compute") {
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
@@ -664,7 +666,7 @@ void RsaaPass::codes_from_records() {
   const int record_unit = record_first_unit(settings_.prepass_first_unit);
   const int code_images = int(gl_->codes.size());
   std::vector<int> image_units, units;
-  for (int k = 0; k < code_images + (gl_->record_images ? 2 : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  for (int k = 0; k < code_images + (gl_->record_images ? kRecordImages : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
   for (int k = 0; k < kRecordUnits; ++k) units.push_back(record_unit + k);
   const gl::SavedState saved(units);
   const gl::SavedComputeState saved_compute({kEdgeListBinding}, image_units);

@@ -139,11 +139,13 @@ uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 vi
 #else
 #define RSAA_RECORD_PRIMITIVE_BITS 0xffffffffu
 #endif
+#define RSAA_RECORD_MATERIAL_SHIFT 24u
+#define RSAA_RECORD_MATERIAL_BITS 0xffu
 
 // What a record's x holds for a surface of this primitive and material (material 0 without
 // material edges).
 uint rsaa_record_surface(uint primitive, uint material) {
-  return (primitive & RSAA_RECORD_PRIMITIVE_BITS) | (material << 24u);
+  return (primitive & RSAA_RECORD_PRIMITIVE_BITS) | (material << RSAA_RECORD_MATERIAL_SHIFT);
 }
 
 uvec2 rsaa_surface_record(vec3 view_face_normal, uint primitive, uint material) {

@@ -117,14 +117,14 @@ bool rsaa_record_on_centres_triangle(uvec2 record, uint centre_surface) {
 
 // The code of subsample i of `pixel` whose record shows a surface at view-space `point`: the
 // jittered pre-pass's rsaa_subsample_code(), with the record's primitive and material widened to
-// the centre's where their stored bits agree with it, so that it decides as the listing pass did.
-uint rsaa_record_code(ivec2 pixel, int i, vec3 point, uvec2 record) {
+// the centre's (`centre`: the centre primitive target's texel) where their stored bits agree with
+// it, so that it decides as the listing pass did.
+uint rsaa_record_code(ivec2 pixel, int i, vec3 point, uvec2 record, uvec2 centre) {
   uint primitive = record.x, material = 0u;
 #ifdef RSAA_MATERIAL_EDGES
-  uvec2 centre = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
   primitive &= RSAA_RECORD_PRIMITIVE_BITS;
   if (primitive == (centre.x & RSAA_RECORD_PRIMITIVE_BITS)) primitive = centre.x;
-  material = (record.x >> 24u) == (centre.y & 0xffu) ? centre.y : ~centre.y;
+  material = (record.x >> RSAA_RECORD_MATERIAL_SHIFT) == (centre.y & RSAA_RECORD_MATERIAL_BITS) ? centre.y : ~centre.y;
 #endif
   return rsaa_subsample_code(pixel, i, point, rsaa_record_normal(record), primitive, material);
 }
