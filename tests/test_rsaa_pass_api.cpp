@@ -510,6 +510,23 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   for (std::size_t p = 0; p < a.pixels.size(); ++p) resampled += a.pixels[p].r != one_x.pixels[p].r;
   EXPECT_GT(resampled, 20);
   gl::check("state test");
+  // The suite's tests share one context: leave GL's defaults for the next (a test run after this
+  // one in the same process saw the stencil and depth state above).
+  glDepthFunc(GL_LESS);
+  glPolygonOffset(0.0f, 0.0f);
+  glStencilFunc(GL_ALWAYS, 0, ~0u);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(~0u);
+  glDisablei(GL_BLEND, 1);
+  glMinSampleShading(0.0f);
+  glCullFace(GL_BACK);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glUseProgram(0);
+  for (GLuint unit : {0u, 1u, 2u, 3u, 4u}) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
+  for (GLuint unit : {2u, 13u}) glBindTextureUnit(unit, 0);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 13, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 // State an engine turns on for its own draws that decides which samples a fragment writes (the
