@@ -201,6 +201,25 @@ namespace {
 constexpr GLenum kSampleCaps[] = {GL_MULTISAMPLE, GL_SAMPLE_MASK, GL_SAMPLE_COVERAGE, GL_SAMPLE_ALPHA_TO_COVERAGE,
                                   GL_SAMPLE_ALPHA_TO_ONE, GL_COLOR_LOGIC_OP};
 
+// Every texture target a unit has, with its binding query: SavedState puts back all of them (a
+// pass binding its units with glBindTextures and a zero name unbinds an engine's cube map too).
+struct TextureTargetBinding {
+  GLenum target, binding;
+};
+constexpr TextureTargetBinding kTextureTargetBindings[] = {
+    {GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
+    {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D},
+    {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D},
+    {GL_TEXTURE_1D_ARRAY, GL_TEXTURE_BINDING_1D_ARRAY},
+    {GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BINDING_2D_ARRAY},
+    {GL_TEXTURE_RECTANGLE, GL_TEXTURE_BINDING_RECTANGLE},
+    {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP},
+    {GL_TEXTURE_CUBE_MAP_ARRAY, GL_TEXTURE_BINDING_CUBE_MAP_ARRAY},
+    {GL_TEXTURE_BUFFER, GL_TEXTURE_BINDING_BUFFER},
+    {GL_TEXTURE_2D_MULTISAMPLE, GL_TEXTURE_BINDING_2D_MULTISAMPLE},
+    {GL_TEXTURE_2D_MULTISAMPLE_ARRAY, GL_TEXTURE_BINDING_2D_MULTISAMPLE_ARRAY}};
+static_assert(std::size(kTextureTargetBindings) == SavedState::kTextureTargets, "one binding saved per target");
+
 }  // namespace
 
 IndexedBufferBinding save_indexed_buffer(GLenum target, int binding) {
@@ -255,7 +274,7 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   rasterizer_discard_ = glIsEnabled(GL_RASTERIZER_DISCARD);
   static_assert(std::size(kSampleCaps) == sizeof(sample_caps_) / sizeof(sample_caps_[0]), "one flag per capability");
   for (std::size_t i = 0; i < std::size(kSampleCaps); ++i) sample_caps_[i] = glIsEnabled(kSampleCaps[i]);
-  glGetIntegerv(GL_POLYGON_MODE, &polygon_mode_);
+  glGetIntegerv(GL_POLYGON_MODE, polygon_mode_);
   GLint draw_buffers = 1;
   glGetIntegerv(GL_MAX_DRAW_BUFFERS, &draw_buffers);
   for (GLuint i = 0; i < GLuint(draw_buffers); ++i) {
@@ -268,12 +287,10 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
   for (int unit : texture_units) {
-    UnitTextures t{unit, 0, 0, 0, 0};
+    UnitTextures t{unit, {}, 0};
     glActiveTexture(GLenum(GL_TEXTURE0 + unit));
     glGetIntegerv(GL_SAMPLER_BINDING, &t.sampler);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &t.texture_2d);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &t.texture_array);
-    glGetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &t.texture_multisample);
+    for (int k = 0; k < kTextureTargets; ++k) glGetIntegerv(kTextureTargetBindings[k].binding, &t.textures[k]);
     textures_.push_back(t);
   }
   glActiveTexture(GLenum(active_texture_));
@@ -284,9 +301,7 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
 SavedState::~SavedState() {
   for (const UnitTextures& t : textures_) {
     glActiveTexture(GLenum(GL_TEXTURE0 + t.unit));
-    glBindTexture(GL_TEXTURE_2D, GLuint(t.texture_2d));
-    glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(t.texture_array));
-    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, GLuint(t.texture_multisample));
+    for (int k = 0; k < kTextureTargets; ++k) glBindTexture(kTextureTargetBindings[k].target, GLuint(t.textures[k]));
     glBindSampler(GLuint(t.unit), GLuint(t.sampler));
   }
   glActiveTexture(GLenum(active_texture_));
@@ -304,7 +319,7 @@ SavedState::~SavedState() {
   rasterizer_discard_ ? glEnable(GL_RASTERIZER_DISCARD) : glDisable(GL_RASTERIZER_DISCARD);
   for (std::size_t i = 0; i < std::size(kSampleCaps); ++i)
     sample_caps_[i] ? glEnable(kSampleCaps[i]) : glDisable(kSampleCaps[i]);
-  glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_));
+  glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_[0]));  // a core context sets both faces alike
   for (GLuint i = 0; i < GLuint(scissor_tests_.size()); ++i)
     scissor_tests_[i] ? glEnablei(GL_SCISSOR_TEST, i) : glDisablei(GL_SCISSOR_TEST, i);
   sample_shading_ ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);
@@ -409,6 +424,15 @@ void require_texture(GLuint texture, GLenum internal_format, int width, int heig
   if (base_level != 0)
     throw std::invalid_argument(what + ": texture " + std::to_string(texture) + " has GL_TEXTURE_BASE_LEVEL " +
                                 std::to_string(base_level) + "; the pass reads and writes level 0, so it needs 0");
+  // Texture reads apply a swizzle and image loads, blits and copies do not: a swizzled texture
+  // would be read two ways within one pass.
+  GLint swizzle[4] = {};
+  glGetTextureParameteriv(texture, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+  const GLint identity[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
+  for (int c = 0; c < 4; ++c)
+    if (swizzle[c] != identity[c])
+      throw std::invalid_argument(what + ": texture " + std::to_string(texture) + " has a GL_TEXTURE_SWIZZLE_" +
+                                  "RGBA"[c] + " other than its own channel; the pass needs the identity swizzle");
 }
 
 }  // namespace rsaa::gl

@@ -119,17 +119,19 @@ void restore_indexed_buffer(const IndexedBufferBinding& b);
 // an engine leaves the engine's state as it found it.
 class SavedState {
  public:
-  // Also saves the 2D, 2D-array and 2D-multisample textures bound to `texture_units` and the
-  // uniform buffers bound at `uniform_bindings`.
+  // Also saves the textures bound to `texture_units` (every target: glBindTextures with a zero
+  // name unbinds them all) and the uniform buffers bound at `uniform_bindings`.
   SavedState(std::vector<int> texture_units, std::vector<int> uniform_bindings = {});
   ~SavedState();
   SavedState(const SavedState&) = delete;
   SavedState& operator=(const SavedState&) = delete;
+  static constexpr int kTextureTargets = 11;  // every texture target of GL 4.5
 
  private:
   struct UnitTextures {
     int unit;
-    GLint texture_2d, texture_array, texture_multisample, sampler;
+    GLint textures[kTextureTargets];  // in the order of kTextureTargetBindings in gl_objects.cpp
+    GLint sampler;
   };
   struct DrawBufferState {
     GLboolean blend;
@@ -145,7 +147,7 @@ class SavedState {
   GLboolean sample_shading_ = GL_FALSE, cull_face_ = GL_FALSE, rasterizer_discard_ = GL_FALSE;
   // GL_MULTISAMPLE, the sample mask and coverage operations and the colour logic op (kSampleCaps).
   GLboolean sample_caps_[6] = {};
-  GLint polygon_mode_ = GL_FILL;
+  GLint polygon_mode_[2] = {GL_FILL, GL_FILL};  // GL_POLYGON_MODE reports front and back
   GLboolean polygon_offset_fill_ = GL_FALSE;
   GLfloat min_sample_shading_ = 0.0f;
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;

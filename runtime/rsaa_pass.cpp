@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 
 #include "core/rsaa/conventions.h"
 #include "runtime/camera.h"
@@ -150,6 +151,13 @@ OffsetTable table_of(const RsaaSettings& settings) {
     throw std::invalid_argument("the RSAA table for '" + table.pattern.name + "' has " +
                                 std::to_string(table.offsets.size()) + " offsets for " +
                                 std::to_string(table.pattern.size()) + " samples");
+  // A table built in memory has not been through the file reader's checks: finite positions
+  // inside the pixel, none coinciding (the pass steps to the outside pixel of each).
+  try {
+    (void)pattern_from_positions("table", table.pattern.positions);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("the RSAA table for '" + table.pattern.name + "': " + e.what());
+  }
   return table;
 }
 
@@ -268,16 +276,34 @@ void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSet
                                 (zo ? "GL_ZERO_TO_ONE" : "GL_NEGATIVE_ONE_TO_ONE") + "), the GL has " +
                                 (origin != GL_LOWER_LEFT ? "GL_UPPER_LEFT" : zo ? "GL_NEGATIVE_ONE_TO_ONE" : "GL_ZERO_TO_ONE") +
                                 ": depth reconstruction and the pre-pass depth test follow the setting");
+  // Every pixel's position is rebuilt through the inverse projection: a NaN, infinite or singular
+  // matrix (or one that sends depths to infinity) would give every similarity as NaN, silently.
+  const glm::mat4& inverse = frame.inverse_projection;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(inverse[c][r]))
+        throw std::invalid_argument("RsaaFrame::inverse_projection has a non-finite element (column " +
+                                    std::to_string(c) + ", row " + std::to_string(r) + ")");
+  const double determinant = glm::determinant(glm::dmat4(inverse));
+  if (!(std::abs(determinant) > 0.0) || !std::isfinite(determinant))
+    throw std::invalid_argument("RsaaFrame::inverse_projection is singular: it is no inverse of a projection");
   // Nearer is smaller depth, but for reverse Z: a camera projection (both depths in front of the
   // camera) must agree.
-  const double quarter = view_distance(frame.inverse_projection, 0.25f, zo);
-  const double three_quarters = view_distance(frame.inverse_projection, 0.75f, zo);
-  if (!(quarter > 0.0 && three_quarters > 0.0 && std::isfinite(quarter) && std::isfinite(three_quarters))) return;
+  const double quarter = view_distance(inverse, 0.25f, zo);
+  const double three_quarters = view_distance(inverse, 0.75f, zo);
+  if (!std::isfinite(quarter) || !std::isfinite(three_quarters))
+    throw std::invalid_argument("RsaaFrame::inverse_projection sends window depth 0.25 or 0.75 to no finite point");
+  if (!(quarter > 0.0 && three_quarters > 0.0)) return;
   const bool reversed = quarter > three_quarters;
   if (reversed != (settings.depth == "reverse-z"))
     throw std::invalid_argument(std::string("RsaaFrame::inverse_projection puts depth ") + (reversed ? "1" : "0") +
                                 " nearer, but RsaaSettings::depth is \"" + settings.depth + "\"" +
                                 (reversed ? " (reverse Z needs \"reverse-z\")" : ""));
+}
+
+// A moved-from RsaaPass or RsaaTargets has no GL objects: a call on it is a clear error.
+void require_not_moved_from(const void* objects, const char* call) {
+  if (!objects) throw std::logic_error(std::string(call) + ": this object was moved from");
 }
 
 // An image size the driver can hold in a texture and draw into whole, else std::invalid_argument
@@ -321,10 +347,17 @@ RsaaTargets::~RsaaTargets() = default;
 RsaaTargets::RsaaTargets(RsaaTargets&&) noexcept = default;
 RsaaTargets& RsaaTargets::operator=(RsaaTargets&&) noexcept = default;
 
-void RsaaTargets::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get()); }
-GlName RsaaTargets::colour() const { return colour_ ? colour_ : gl_->colour.get(); }
+void RsaaTargets::bind() const {
+  require_not_moved_from(gl_.get(), "RsaaTargets::bind");
+  glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get());
+}
+GlName RsaaTargets::colour() const {
+  require_not_moved_from(gl_.get(), "RsaaTargets::colour");
+  return colour_ ? colour_ : gl_->colour.get();
+}
 
 void RsaaTargets::use_colour(GlName colour) {
+  require_not_moved_from(gl_.get(), "RsaaTargets::use_colour");
   // Attached every call: a deleted texture stays attached to a framebuffer not bound, and its name
   // may come back as another texture.
   if (colour) gl::require_texture(colour, GL_RGBA16F, width_, height_, "RsaaTargets::use_colour");
@@ -333,6 +366,7 @@ void RsaaTargets::use_colour(GlName colour) {
 }
 
 void RsaaTargets::clear(const float background[3], float far_depth) const {
+  require_not_moved_from(gl_.get(), "RsaaTargets::clear");
   // Clears obey the scissor test and the colour and depth masks: the engine's (a depth mask left
   // off after its transparent draws, a scissor left on) left pixels of the last frame.
   const gl::SavedState saved({});
@@ -347,6 +381,7 @@ void RsaaTargets::clear(const float background[3], float far_depth) const {
 }
 
 RsaaFrame RsaaTargets::frame(const glm::mat4& inverse_projection) const {
+  require_not_moved_from(gl_.get(), "RsaaTargets::frame");
   return {colour(), gl_->normal.get(), gl_->primitive.get(), gl_->depth.get(), width_, height_, inverse_projection};
 }
 
@@ -623,10 +658,12 @@ RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;
 
 std::string RsaaPass::prepass_glsl() const {
   return "// RSAA pre-pass for pattern " + pattern_.name + " (generated by RsaaPass::prepass_glsl)\n" +
-         rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_) + rsaa_shader_file("rsaa_prepass.glsl");
+         rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_) + "#define RSAA_PREPASS_SIGNATURE " +
+         prepass_signature() + "\n" + rsaa_shader_file("rsaa_prepass.glsl");
 }
 
 std::vector<GlName> RsaaPass::code_textures() const {
+  require_not_moved_from(gl_.get(), "RsaaPass::code_textures");
   std::vector<GlName> names;
   for (const gl::Texture& t : gl_->codes) names.push_back(t.get());
   return names;
@@ -665,17 +702,19 @@ void RsaaPass::make_record_programs(bool record_images) {
 void RsaaPass::codes_from_records() {
   const int record_unit = record_first_unit(settings_.prepass_first_unit);
   const int code_images = int(gl_->codes.size());
+  // The records and depths of each draw (two units, four for a union pattern's two draws).
+  const int record_units = union_ ? kRecordUnits : 2;
   std::vector<int> image_units, units;
   for (int k = 0; k < code_images + (gl_->record_images ? kRecordImages : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
-  for (int k = 0; k < kRecordUnits; ++k) units.push_back(record_unit + k);
+  for (int k = 0; k < record_units; ++k) units.push_back(record_unit + k);
   const gl::SavedState saved(units);
   const gl::SavedComputeState saved_compute({kEdgeListBinding}, image_units);
   const GLuint records[kRecordUnits] = {gl_->records.get(), gl_->record_depths.get(), gl_->records2.get(),
                                         gl_->record_depths2.get()};
-  glBindTextures(GLuint(record_unit), kRecordUnits, records);
+  glBindTextures(GLuint(record_unit), record_units, records);
   const GLboolean layered = layered_ ? GL_TRUE : GL_FALSE;  // array textures: every layer
   const std::vector<GLuint> samplers(kRecordUnits, gl_->nearest.get());
-  glBindSamplers(GLuint(record_unit), kRecordUnits, samplers.data());
+  glBindSamplers(GLuint(record_unit), record_units, samplers.data());
   for (int k = 0; k < code_images; ++k)
     glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
                        GL_WRITE_ONLY, code_format(settings_.code_bits));
@@ -731,6 +770,24 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     gl::set_pass_state(true);
     if (reverse_z) glDepthFunc(GL_GREATER);
   };
+  // Each draw goes into the framebuffer and viewport the pass has just set: a callback that binds
+  // or sets its own draws elsewhere, and the codes would be the last frame's, silently.
+  const auto checked_draw = [&](int subsample, glm::vec2 jitter) {
+    GLint framebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    draw(subsample, jitter);
+    GLint after = 0, viewport[4] = {};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &after);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    if (after != framebuffer)
+      throw std::logic_error("RSAA pre-pass: the draw callback bound framebuffer " + std::to_string(after) +
+                             "; it must draw into the one the pass bound (" + std::to_string(framebuffer) + ")");
+    if (viewport[0] != 0 || viewport[1] != 0 || viewport[2] != frame.width || viewport[3] != frame.height)
+      throw std::logic_error("RSAA pre-pass: the draw callback set the viewport to " + std::to_string(viewport[0]) +
+                             "," + std::to_string(viewport[1]) + " " + std::to_string(viewport[2]) + "x" +
+                             std::to_string(viewport[3]) + "; the pass draws the frame's 0,0 " +
+                             std::to_string(frame.width) + "x" + std::to_string(frame.height));
+  };
   const auto write_per_draw = [&](glm::vec2 jitter, int subsample, Vec2 sample_shift) {
     const RsaaUniformPerDraw per_draw = {
         {jitter.x, jitter.y}, settings_.threshold, subsample, {float(sample_shift.x), float(sample_shift.y)}};
@@ -753,7 +810,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       const Vec2 shift = d == 0 ? Vec2{0.0, 0.0} : union_shift_;
       const glm::vec2 jitter = d == 0 ? glm::vec2(0.0f) : jitter_ndc_for_sample(shift.x, shift.y, frame.width, frame.height);
       write_per_draw(jitter, d == 0 ? 0 : pattern_.size() / 2, pixel_to_gl(shift));
-      draw(-1, jitter);
+      checked_draw(-1, jitter);
     }
     codes_from_records();
     gl::check("RSAA pre-pass (multisample)");
@@ -770,7 +827,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       const glm::vec2 jitter = jitter_ndc_for_sample(s.x, s.y, frame.width, frame.height);
       write_per_draw(jitter, i, {0.0, 0.0});
       set_depth_state();  // again: the previous callback may have changed it
-      draw(i, jitter);
+      checked_draw(i, jitter);
     }
     codes_from_records();
     gl::check("RSAA pre-pass (records)");
@@ -813,13 +870,14 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       glStencilMask(0u);
     }
     glColorMaski(0, i % 4 == 0, i % 4 == 1, i % 4 == 2, i % 4 == 3);
-    draw(i, jitter);
+    checked_draw(i, jitter);
   }
   gl::check("RSAA pre-pass");
   codes_ready_ = true;
 }
 
 void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& draw_geometry) {
+  require_not_moved_from(gl_.get(), "RsaaPass::render_subsamples");
   const GLuint program = gl_->subsample_program.get();
   run_prepass(frame, [&](int, glm::vec2 jitter_ndc) {
     glUseProgram(program);
@@ -829,23 +887,33 @@ void RsaaPass::render_subsamples(const RsaaFrame& frame, const DrawGeometry& dra
     if (GLuint(current) != program)
       throw std::logic_error("RSAA pre-pass: the draw callback drew with program " + std::to_string(current) +
                              ", not the pre-pass program " + std::to_string(program) + " it was given");
+    require_prepass_bindings_kept(frame);
   });
 }
 
 void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const std::function<void()>& draw) {
-  const int first = settings_.prepass_first_unit;
-  const GLuint expected_textures[3] = {frame.centre_normal, frame.centre_primitive, frame.centre_depth};
+  require_not_moved_from(gl_.get(), "RsaaPass::render_subsamples_with_own_shaders");
   run_prepass(frame, [&](int, glm::vec2) {
     draw();
     // What the engine's draw must leave alone, checked after the fact: a clear error, never
     // codes computed from another texture.
-    GLint current = 0;
+    GLint current = 0, pipeline = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    glGetIntegerv(GL_PROGRAM_PIPELINE_BINDING, &pipeline);
+    if (current == 0 && pipeline != 0)
+      throw std::logic_error("RSAA pre-pass: the engine's draw used program pipeline " + std::to_string(pipeline) +
+                             "; the pass checks one program that includes RsaaPass::prepass_glsl() in its stages "
+                             "(glUseProgram), not a pipeline of separable programs");
     if (current == 0 ||
         glGetProgramResourceIndex(GLuint(current), GL_UNIFORM_BLOCK, "RsaaUniforms") == GL_INVALID_INDEX)
       throw std::logic_error("RSAA pre-pass: the engine's program " + std::to_string(current) +
                              " has no RsaaUniforms block: its stages must include RsaaPass::prepass_glsl() "
                              "and call rsaa_jitter() and rsaa_prepass_code()");
+    if (glGetUniformLocation(GLuint(current), prepass_signature().c_str()) < 0)
+      throw std::logic_error("RSAA pre-pass: the engine's program " + std::to_string(current) +
+                             " was not built from this pass's RsaaPass::prepass_glsl() (another pass's, or "
+                             "one for other settings or another driver: its codes would not be this pass's), "
+                             "or its fragment stage does not write rsaa_prepass_code()");
     GLint block_binding = -1;
     glGetActiveUniformBlockiv(GLuint(current),
                               glGetProgramResourceIndex(GLuint(current), GL_UNIFORM_BLOCK, "RsaaUniforms"),
@@ -854,28 +922,48 @@ void RsaaPass::render_subsamples_with_own_shaders(const RsaaFrame& frame, const 
       throw std::logic_error("RSAA pre-pass: the engine's program reads RsaaUniforms at binding " +
                              std::to_string(block_binding) + ", not " + std::to_string(settings_.uniform_binding) +
                              " (RsaaSettings::uniform_binding; do not call glUniformBlockBinding on it)");
-    GLint bound = 0;
-    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, GLuint(settings_.uniform_binding), &bound);
-    if (GLuint(bound) != gl_->uniforms.get())
-      throw std::logic_error("RSAA pre-pass: the engine's draw rebound uniform buffer binding " +
-                             std::to_string(settings_.uniform_binding) + " (RsaaSettings::uniform_binding)");
-    for (int k = 0; k < 3; ++k) {
-      GLint texture = 0;
-      glGetIntegeri_v(GL_TEXTURE_BINDING_2D, GLuint(first + k), &texture);
-      if (GLuint(texture) != expected_textures[k])
-        throw std::logic_error("RSAA pre-pass: the engine's draw rebound texture unit " + std::to_string(first + k) +
-                               " (RsaaSettings::prepass_first_unit + " + std::to_string(k) + ")");
-      GLint sampler = 0;  // another sampler object (a linear one) makes the integer textures read as zero
-      glGetIntegeri_v(GL_SAMPLER_BINDING, GLuint(first + k), &sampler);
-      if (GLuint(sampler) != gl_->nearest.get())
-        throw std::logic_error("RSAA pre-pass: the engine's draw bound sampler object " + std::to_string(sampler) +
-                               " to texture unit " + std::to_string(first + k) + " (RsaaSettings::prepass_first_unit + " +
-                               std::to_string(k) + ")");
-    }
+    require_prepass_bindings_kept(frame);
   });
 }
 
+// The pre-pass's uniform buffer, its three texture units and their samplers, as run_prepass()
+// bound them: a draw that rebound one computed codes from another texture.
+void RsaaPass::require_prepass_bindings_kept(const RsaaFrame& frame) const {
+  const int first = settings_.prepass_first_unit;
+  const GLuint expected_textures[3] = {frame.centre_normal, frame.centre_primitive, frame.centre_depth};
+  GLint bound = 0;
+  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, GLuint(settings_.uniform_binding), &bound);
+  if (GLuint(bound) != gl_->uniforms.get())
+    throw std::logic_error("RSAA pre-pass: the engine's draw rebound uniform buffer binding " +
+                           std::to_string(settings_.uniform_binding) + " (RsaaSettings::uniform_binding)");
+  for (int k = 0; k < 3; ++k) {
+    GLint texture = 0;
+    glGetIntegeri_v(GL_TEXTURE_BINDING_2D, GLuint(first + k), &texture);
+    if (GLuint(texture) != expected_textures[k])
+      throw std::logic_error("RSAA pre-pass: the engine's draw rebound texture unit " + std::to_string(first + k) +
+                             " (RsaaSettings::prepass_first_unit + " + std::to_string(k) + ")");
+    GLint sampler = 0;  // another sampler object (a linear one) makes the integer textures read as zero
+    glGetIntegeri_v(GL_SAMPLER_BINDING, GLuint(first + k), &sampler);
+    if (GLuint(sampler) != gl_->nearest.get())
+      throw std::logic_error("RSAA pre-pass: the engine's draw bound sampler object " + std::to_string(sampler) +
+                             " to texture unit " + std::to_string(first + k) + " (RsaaSettings::prepass_first_unit + " +
+                             std::to_string(k) + ")");
+  }
+}
+
+// The uniform that prepass_glsl() declares and rsaa_prepass_code() reads (always 0): its name
+// carries a hash of the text, so that a program built from another pass's text lacks it.
+std::string RsaaPass::prepass_signature() const {
+  const std::string text = rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_);
+  std::uint32_t hash = 2166136261u;  // FNV-1a
+  for (const char c : text) hash = (hash ^ std::uint8_t(c)) * 16777619u;
+  char name[40];
+  std::snprintf(name, sizeof name, "rsaa_prepass_signature_%08x", unsigned(hash));
+  return name;
+}
+
 void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
+  require_not_moved_from(gl_.get(), "RsaaPass::resolve");
   gl::check_none_pending("RsaaPass::resolve");
   validate_frame(frame, width_, height_, settings_);
   gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");

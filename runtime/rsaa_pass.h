@@ -322,6 +322,10 @@ class RsaaPass {
   // the programs that make them (records read as images, or as textures where the driver lacks
   // multisample image loads).
   void codes_from_records();
+  // Throws std::logic_error when a pre-pass draw left another uniform buffer, texture or sampler
+  // on the pass's bindings.
+  void require_prepass_bindings_kept(const RsaaFrame& frame) const;
+  std::string prepass_signature() const;
   void make_record_programs(bool record_images);
   RsaaSettings settings_;
   SamplePattern pattern_;

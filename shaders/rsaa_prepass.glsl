@@ -164,6 +164,16 @@ vec3 rsaa_record_normal(uvec2 record) {
 }
 
 #ifndef RSAA_PREPASS_COMPUTE
+#ifdef RSAA_PREPASS_SIGNATURE
+// Named after this pass's configuration (RsaaPass::prepass_glsl() defines the name): the pass
+// finds it in the engine's program, so that a program built from another pass's text is refused
+// rather than drawn with. GL's initial value 0, never set: it adds nothing.
+uniform uint RSAA_PREPASS_SIGNATURE;
+#define RSAA_SIGNED(value) ((value) + uvec4(RSAA_PREPASS_SIGNATURE))
+#else
+#define RSAA_SIGNED(value) (value)
+#endif
+
 // What the engine's fragment stage writes (to location 0, a uvec4 output): jittered, the code of
 // the subsample this draw samples (all four channels carry it: the pass masks the ones of other
 // subsamples); multisample, the surface record of the samples the fragment covers (.xy).
@@ -174,10 +184,10 @@ uvec4 rsaa_prepass_code(vec3 view_position, vec3 view_face_normal, uint primitiv
   const uint material = 0u;
 #endif
 #if defined(RSAA_PREPASS_MSAA) || defined(RSAA_PREPASS_RECORDS)
-  return uvec4(rsaa_surface_record(view_face_normal, primitive, material), 0u, 0u);
+  return RSAA_SIGNED(uvec4(rsaa_surface_record(view_face_normal, primitive, material), 0u, 0u));
 #else
-  return uvec4(rsaa_subsample_code(ivec2(gl_FragCoord.xy), rsaa_subsample, view_position, view_face_normal, primitive,
-                                   material));
+  return RSAA_SIGNED(uvec4(rsaa_subsample_code(ivec2(gl_FragCoord.xy), rsaa_subsample, view_position,
+                                               view_face_normal, primitive, material)));
 #endif
 }
 #endif  // RSAA_PREPASS_COMPUTE

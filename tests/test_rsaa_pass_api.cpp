@@ -414,13 +414,13 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   EXPECT_EQ(GLuint(generic_uniforms), engine_generic_uniforms.get());
   EXPECT_TRUE(glIsEnabled(GL_SAMPLE_SHADING));
   EXPECT_EQ(min_sample_shading, 0.25f);
-  GLint polygon_mode = 0, sampler = 0;
+  GLint polygon_mode[2] = {}, sampler = 0;  // GL_POLYGON_MODE reports front and back
   GLboolean mask1[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
-  glGetIntegerv(GL_POLYGON_MODE, &polygon_mode);
+  glGetIntegerv(GL_POLYGON_MODE, polygon_mode);
   glGetIntegeri_v(GL_SAMPLER_BINDING, 0, &sampler);
   glGetBooleani_v(GL_COLOR_WRITEMASK, 1, mask1);
   EXPECT_TRUE(glIsEnabled(GL_CULL_FACE));
-  EXPECT_EQ(polygon_mode, GL_LINE);
+  EXPECT_EQ(polygon_mode[0], GL_LINE);
   EXPECT_EQ(GLuint(sampler), nearest);
   EXPECT_TRUE(glIsEnabledi(GL_BLEND, 1));
   EXPECT_FALSE(mask1[0] || mask1[1] || mask1[2] || mask1[3]);
