@@ -27,15 +27,17 @@
 // wrong image. The pass reads the four through its own sampler objects (the colour bilinear and
 // clamped to the edge, the others nearest): their own wrap modes, minification filters, depth
 // comparison and completeness under them (a glTexImage2D texture with the default mipmap filter)
-// do not matter.
+// do not matter; a swizzle other than the identity is refused (texture reads would apply it,
+// image loads and copies not).
 //
 // DEPTH CONVENTION (RsaaSettings::depth). "gl", OpenGL's default: glClipControl(GL_LOWER_LEFT,
 // GL_NEGATIVE_ONE_TO_ONE), nearer is less, inverse_projection maps NDC (z = 2 depth - 1) to view
 // space. "zero-to-one": glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), nearer is less, NDC z =
 // depth. "reverse-z": GL_ZERO_TO_ONE with nearer greater (depth cleared to 0, GL_GREATER), NDC z =
 // depth; the pre-pass then clears its depth to 0 and tests with GL_GREATER. Depth range [0, 1]
-// always. A clip control other than the setting's, or an inverse_projection whose depth order is
-// not the setting's, is refused (std::invalid_argument).
+// always. A clip control other than the setting's, or an inverse_projection that is not finite,
+// is singular, sends a depth to no finite point or whose depth order is not the setting's, is
+// refused (std::invalid_argument).
 //
 // THE PRE-PASS, WITH THE ENGINE'S OWN SHADERS (render_subsamples_with_own_shaders). The engine
 // compiles a program whose stages begin with `#version 450 core` (or later), then prepass_glsl()
@@ -56,12 +58,17 @@
 // set culling for its geometry, but must draw with the colour mask, depth test, function and
 // writes and blending the pass set (the codes depend on them; state it changes after drawing is
 // its own business). After each call the pass checks that the current program declares the
-// block at that binding (no glUniformBlockBinding elsewhere) and that its units and buffer are
-// untouched, and throws std::logic_error naming what is not.
+// block at that binding (no glUniformBlockBinding elsewhere) and was built from this pass's own
+// prepass_glsl() (its text declares a uniform named after the pass's settings and driver
+// pattern: another pass's program, or one cached across a change of settings, would write other
+// codes), that no pipeline of separable programs drew, that its units and buffer are untouched
+// and that the framebuffer and viewport are still the pass's, and throws std::logic_error naming
+// what is not.
 //
 // THE PRE-PASS, WITH THE PASS'S PROGRAM (render_subsamples). The pass calls
 // `draw_geometry(program, jitter_ndc)` with its own program current (render_subsamples() throws
-// std::logic_error if another program is current when it returns), after the same set-up. The
+// std::logic_error if another program is current when it returns, or the units, buffer,
+// framebuffer or viewport were changed, as above), after the same set-up. The
 // callback draws the same geometry as the 1x frame with `program`, after setting on it:
 //   vertex attributes  0 position (vec3, world space: the pre-pass applies no model matrix,
 //                      so instanced, skinned or morphed geometry is baked into a buffer first;
@@ -90,12 +97,14 @@
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
 // shader storage buffer at binding 0 (and the generic one), the image units it binds (0-7 at most:
 // outputs, codes, records) and the indirect-dispatch buffer, and for the record passes of the
-// multisample and "records" pre-passes their four texture units too; the engine's scissor, masks,
+// multisample and "records" pre-passes their texture units too (every texture target of each
+// unit saved: 2D, cube map, 3D and the rest); the engine's scissor, masks,
 // culling and samplers do not reach the pass. (A program the engine deleted while current cannot
 // be restored: none is current after.)
 // A GL error already set when a call begins is the engine's: the call throws std::runtime_error
 // (gl::GlError) saying so, before it does anything.
-// Textures and programs they create belong to the RsaaPass object.
+// Textures and programs they create belong to the RsaaPass object. A call that draws, resolves or
+// hands out GL names on a moved-from RsaaPass or RsaaTargets throws std::logic_error.
 #pragma once
 
 #include <cstdint>
