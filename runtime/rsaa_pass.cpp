@@ -951,15 +951,16 @@ void RsaaPass::require_prepass_bindings_kept(const RsaaFrame& frame) const {
   }
 }
 
-// The uniform that prepass_glsl() declares and rsaa_prepass_code() reads (always 0): its name
-// carries a hash of the text, so that a program built from another pass's text lacks it.
-std::string RsaaPass::prepass_signature() const {
-  const std::string text = rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_);
+std::string rsaa_prepass_signature(const std::string& defines) {
   std::uint32_t hash = 2166136261u;  // FNV-1a
-  for (const char c : text) hash = (hash ^ std::uint8_t(c)) * 16777619u;
+  for (const char c : defines) hash = (hash ^ std::uint8_t(c)) * 16777619u;
   char name[40];
   std::snprintf(name, sizeof name, "rsaa_prepass_signature_%08x", unsigned(hash));
   return name;
+}
+
+std::string RsaaPass::prepass_signature() const {
+  return rsaa_prepass_signature(rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_));
 }
 
 void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output) {

@@ -233,6 +233,11 @@ std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_rec
 // #include lines replaced by the included text: one self-contained text. Needs no GL.
 std::string rsaa_shader_file(const std::string& name);
 
+// The name of the uniform a pre-pass built with `defines` (rsaa_shader_defines()) declares, as
+// RSAA_PREPASS_SIGNATURE (prepass_glsl() and `rsaa shaders` define it): a hash of the defines,
+// which the pass looks for in the engine's program (render_subsamples_with_own_shaders).
+std::string rsaa_prepass_signature(const std::string& defines);
+
 // The engine's 1x frame (formats above). inverse_projection is that of the unjittered camera.
 struct RsaaFrame {
   GlName colour = 0, centre_normal = 0, centre_primitive = 0, centre_depth = 0;
@@ -334,7 +339,7 @@ class RsaaPass {
   // Throws std::logic_error when a pre-pass draw left another uniform buffer, texture or sampler
   // on the pass's bindings.
   void require_prepass_bindings_kept(const RsaaFrame& frame) const;
-  std::string prepass_signature() const;
+  std::string prepass_signature() const;  // rsaa_prepass_signature() of this pass's defines
   void make_record_programs(bool record_images);
   RsaaSettings settings_;
   SamplePattern pattern_;

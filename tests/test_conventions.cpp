@@ -35,7 +35,7 @@ TEST(Conventions, GlSamplePositionsMoveOriginToCentreAndFlipY) {
   // centre, which is +y in pixel space.
   EXPECT_EQ(gl_sample_position_to_pixel({0.5, 0.5}), (Vec2{0.0, 0.0}));
   EXPECT_EQ(gl_sample_position_to_pixel({0.75, 0.25}), (Vec2{0.25, 0.25}));
-  const SamplePattern p = pattern_from_gl_positions("gl4x", {{0.375, 0.125}, {0.875, 0.375}});
+  const SamplePattern p = pattern_from_gl_positions("gl2x", {{0.375, 0.125}, {0.875, 0.375}});
   EXPECT_EQ(p.positions[0], (Vec2{-0.125, 0.375}));
   EXPECT_EQ(p.positions[1], (Vec2{0.375, 0.125}));
 }

@@ -138,6 +138,13 @@ TEST_F(FiguresGl, TinyRunOfEveryFigure) {
         for (double v : row) EXPECT_TRUE(std::isfinite(v) || name == "memory") << name;
       }
     bench::write_figure(f, dir.path());
+    // A cell without a value (memory: a technique without that buffer) is written empty, as
+    // the Markdown's "-": never "nan" or "inf" in a file a spreadsheet reads.
+    for (const auto& part : f.parts) {
+      const std::string csv = test::read_text(dir.file(part.stem + ".csv"));
+      EXPECT_EQ(csv.find("nan"), std::string::npos) << part.stem << "\n" << csv;
+      EXPECT_EQ(csv.find("inf"), std::string::npos) << part.stem << "\n" << csv;
+    }
     if (name == "fig9") {
       const auto& t = f.parts[0].table;
       ASSERT_EQ(t.rows.size(), 3u);

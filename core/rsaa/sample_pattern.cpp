@@ -76,6 +76,11 @@ SamplePattern pattern_from_positions(const std::string& name, const std::vector<
   if (positions.empty() || positions.size() > static_cast<std::size_t>(kMaxPatternSamples))
     throw std::invalid_argument("pattern '" + name + "' has " + std::to_string(positions.size()) +
                                 " samples; expected 1 to 64");
+  // A driver pattern's name says its count: gl8x with four positions would pass for eight.
+  const int driver_samples = gl_pattern_samples(name);
+  if (driver_samples > 0 && positions.size() != std::size_t(driver_samples))
+    throw std::invalid_argument("pattern '" + name + "' has " + std::to_string(positions.size()) + " samples; " +
+                                name + " has " + std::to_string(driver_samples));
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const Vec2 p = positions[i];
     if (!is_finite(p) || std::abs(p.x) > 0.5 || std::abs(p.y) > 0.5)

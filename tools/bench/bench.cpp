@@ -301,6 +301,10 @@ std::string results_csv(const std::vector<TechniqueResult>& results) {
   return s.str();
 }
 
+namespace {
+constexpr std::size_t kMaxResults = 4096, kMaxResultsPerScene = 256, kMaxPasses = 64;
+}  // namespace
+
 std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOptions& o) {
   nlohmann::json j;
   try {
@@ -315,10 +319,19 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
     validate_size(o.width, o.height);
     if (o.frames < 1 || o.frames > 1000 || o.orbit_frames < 2 || o.orbit_frames > 1000 || o.lights < 1 || o.lights > 65)
       throw std::runtime_error("timed_frames, orbit_frames or lights outside the bench's ranges");
+    // Bounded as the bench's own runs are (tens of techniques on tens of scenes): every scene's
+    // plots grow with its rows, and 40,000 hand-made rows took 16 GB and a plot 960,110 pixels tall.
+    const auto& entries = j.at("results");
+    if (!entries.is_array() || entries.size() > kMaxResults)
+      throw std::runtime_error("results: expected an array of at most " + std::to_string(kMaxResults) + " entries");
+    std::map<std::string, std::size_t> rows_per_scene;
     std::vector<TechniqueResult> results;
-    for (const auto& e : j.at("results")) {
+    for (const auto& e : entries) {
       TechniqueResult r;
       r.scene = e.at("scene");
+      if (++rows_per_scene[r.scene] > kMaxResultsPerScene)
+        throw std::runtime_error("results: more than " + std::to_string(kMaxResultsPerScene) + " rows for scene " +
+                                 r.scene);
       r.label = e.at("technique");
       const auto& opt = e.at("options");
       r.options.technique = opt.at("technique");
@@ -329,7 +342,10 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       r.options.kernel = opt.value("kernel", 2);
       r.options.rules = opt.value("rules", TechniqueOptions{}.rules);
       r.options.shade = opt.value("shade", TechniqueOptions{}.shade);
-      for (const auto& p : e.at("passes"))
+      const auto& passes = e.at("passes");
+      if (!passes.is_array() || passes.size() > kMaxPasses)
+        throw std::runtime_error("passes: expected an array of at most " + std::to_string(kMaxPasses) + " entries");
+      for (const auto& p : passes)
         r.pass_medians.push_back({p.at("pass"),
                                   p.at("gl_timer_ms").is_null() ? kNoTimerQuery : p.at("gl_timer_ms").get<double>(),
                                   p.at("wall_ms")});

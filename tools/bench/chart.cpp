@@ -99,7 +99,10 @@ std::string table_csv(const FigureTable& t) {
   s << '\n';
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     if (labelled) s << csv_text(r < t.row_labels.size() ? t.row_labels[r] : "") << ',';
-    for (std::size_t c = 0; c < t.rows[r].size(); ++c) s << (c ? "," : "") << number(t.rows[r][c]);
+    // A cell without a value (NaN: a technique that keeps no such buffer) is empty, as the
+    // Markdown's "-", never "nan".
+    for (std::size_t c = 0; c < t.rows[r].size(); ++c)
+      s << (c ? "," : "") << (std::isfinite(t.rows[r][c]) ? number(t.rows[r][c]) : "");
     s << '\n';
   }
   return s.str();

@@ -26,7 +26,8 @@ struct FigureTable {
 };
 
 // Header row, then one row per line; the text columns are quoted (RFC 4180), numbers with 6
-// significant digits. With row labels, a "label" column comes first.
+// significant digits, a cell without a value (not finite) empty. With row labels, a "label"
+// column comes first.
 std::string table_csv(const FigureTable& table);
 
 struct ChartStyle {

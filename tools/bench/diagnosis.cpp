@@ -340,42 +340,53 @@ Diagnosis diagnose(const DiagnosisInputs& in) {
   return d;
 }
 
+namespace {
+
+// A PSNR as text: an image without error (infinite PSNR) says so rather than "inf".
+std::string decibels(double psnr) {
+  if (!std::isfinite(psnr)) return "no error";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f dB", psnr);
+  return text;
+}
+
+// A ratio to no AA's error; "-" where no AA has none to compare with.
+std::string ratio_text(double error, double noaa_error) {
+  if (!(noaa_error > 0.0)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", error / noaa_error);
+  return text;
+}
+
+}  // namespace
+
 std::string diagnosis_markdown(const Diagnosis& d, const std::string& title, const std::string& baseline_name) {
   double rsaa_total = 0.0, noaa_total = 0.0;
   std::size_t pixels = 0;
   for (const DiagnosisRow& r : d.rows) rsaa_total += r.rsaa_error, noaa_total += r.noaa_error, pixels += r.pixels;
   std::ostringstream out;
-  char line[512];
-  std::snprintf(line, sizeof line,
-                "%s: RSAA %.2f dB, no AA %.2f dB, best single fetch (oracle) %.2f dB, exact coverage of the 1x "
-                "colours %.2f dB, the line fitted across the 3x3 masks %.2f dB",
-                title.c_str(), d.rsaa_psnr, d.noaa_psnr, d.oracle_psnr, d.coverage_psnr, d.line_fit_psnr);
-  out << line;
-  if (d.has_baseline) {
-    std::snprintf(line, sizeof line, ", %s %.2f dB", baseline_name.c_str(), d.baseline_psnr);
-    out << line;
-  }
+  out << title << ": RSAA " << decibels(d.rsaa_psnr) << ", no AA " << decibels(d.noaa_psnr)
+      << ", best single fetch (oracle) " << decibels(d.oracle_psnr) << ", exact coverage of the 1x colours "
+      << decibels(d.coverage_psnr) << ", the line fitted across the 3x3 masks " << decibels(d.line_fit_psnr);
+  if (d.has_baseline) out << ", " << baseline_name << " " << decibels(d.baseline_psnr);
   out << "\n\n| pixel class | pixels | share of RSAA error | share of no-AA error | RSAA error / no-AA | oracle / no-AA | exact coverage / no-AA | line fit / no-AA | ";
   if (d.has_baseline) out << baseline_name << " / no-AA | ";
   out << "PSNR if this class were perfect |\n| --- | --- | --- | --- | --- | --- | --- | --- | " << (d.has_baseline ? "--- | " : "")
       << "--- |\n";
+  char line[512];
   for (std::size_t c = 0; c < d.rows.size(); ++c) {
     const DiagnosisRow& r = d.rows[c];
     const double rest = rsaa_total - r.rsaa_error;
     const double if_perfect = rest > 0.0 ? 10.0 * std::log10(255.0 * 255.0 * double(pixels) / rest)
                                          : std::numeric_limits<double>::infinity();
-    const auto ratio = [&](double a) { return r.noaa_error > 0.0 ? a / r.noaa_error : 0.0; };
-    std::snprintf(line, sizeof line, "| %s | %zu | %.1f%% | %.1f%% | %.2f | %.2f | %.2f | %.2f | ", r.name.c_str(), r.pixels,
+    std::snprintf(line, sizeof line, "| %s | %zu | %.1f%% | %.1f%% | ", r.name.c_str(), r.pixels,
                   rsaa_total > 0.0 ? 100.0 * r.rsaa_error / rsaa_total : 0.0,
-                  noaa_total > 0.0 ? 100.0 * r.noaa_error / noaa_total : 0.0, ratio(r.rsaa_error),
-                  ratio(r.oracle_error), ratio(r.coverage_error), ratio(r.line_fit_error));
-    out << line;
-    if (d.has_baseline) {
-      std::snprintf(line, sizeof line, "%.2f | ", ratio(r.baseline_error));
-      out << line;
-    }
-    std::snprintf(line, sizeof line, "%.2f dB |\n", if_perfect);
-    out << line;
+                  noaa_total > 0.0 ? 100.0 * r.noaa_error / noaa_total : 0.0);
+    out << line << ratio_text(r.rsaa_error, r.noaa_error) << " | " << ratio_text(r.oracle_error, r.noaa_error)
+        << " | " << ratio_text(r.coverage_error, r.noaa_error) << " | " << ratio_text(r.line_fit_error, r.noaa_error)
+        << " | ";
+    if (d.has_baseline) out << ratio_text(r.baseline_error, r.noaa_error) << " | ";
+    out << decibels(if_perfect) << " |\n";
   }
   return out.str();
 }

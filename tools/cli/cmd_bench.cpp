@@ -13,6 +13,7 @@
 #include "tools/bench/growth.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
+#include "tools/cli/out_dir.h"
 
 namespace rsaa::cli {
 namespace {
@@ -115,20 +116,21 @@ int run_growth_command(const BenchArgs& a) {
   }
   if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
     throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
+  StagedOutputs staged(a.out_dir);
+  const std::string dir = staged.dir();
   gl::HeadlessContext context;
   const auto results = bench::run_growth(o, [](const std::string& what, int done, int total) {
     std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
   });
-  write_file_atomically(a.out_dir + "/growth.json", bench::growth_json(o, results));
-  write_file_atomically(a.out_dir + "/growth.csv", bench::growth_csv(results));
-  bench::plot_growth(results, bench::GrowthAxis::Pixels, a.out_dir + "/growth-pixels.png");
-  bench::plot_growth(results, bench::GrowthAxis::Triangles, a.out_dir + "/growth-triangles.png");
-  bench::plot_growth(results, bench::GrowthAxis::Lights, a.out_dir + "/growth-lights.png");
+  write_file_atomically(dir + "/growth.json", bench::growth_json(o, results));
+  write_file_atomically(dir + "/growth.csv", bench::growth_csv(results));
+  bench::plot_growth(results, bench::GrowthAxis::Pixels, dir + "/growth-pixels.png");
+  bench::plot_growth(results, bench::GrowthAxis::Triangles, dir + "/growth-triangles.png");
+  bench::plot_growth(results, bench::GrowthAxis::Lights, dir + "/growth-lights.png");
   const std::string report = bench::growth_markdown(o, results);
-  write_file_atomically(a.out_dir + "/growth.md", report);
+  write_file_atomically(dir + "/growth.md", report);
+  print_written(a.out_dir, staged.commit());
   std::printf("%s", report.c_str());
-  std::fprintf(stderr, "wrote %s/growth.json, growth.csv, growth.md, growth-{pixels,triangles,lights}.png\n",
-               a.out_dir.c_str());
   return 0;
 }
 
@@ -158,27 +160,30 @@ int run_bench_command(BenchArgs a) {
   if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
     throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
 
+  StagedOutputs staged(a.out_dir);
+  const std::string dir = staged.dir();
   std::vector<bench::TechniqueResult> results;
   if (!a.from_json.empty()) {
     results = bench::read_results_json(a.from_json, o);
   } else {
     gl::HeadlessContext context;
-    o.crops_dir = a.out_dir;
+    o.crops_dir = dir;
     results = bench::run_bench(o, [](const std::string& what, int done, int total) {
       std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
     });
-    write_file_atomically(a.out_dir + "/bench.json", bench::results_json(o, results));
-    write_file_atomically(a.out_dir + "/bench.csv", bench::results_csv(results));
+    write_file_atomically(dir + "/bench.json", bench::results_json(o, results));
+    write_file_atomically(dir + "/bench.csv", bench::results_csv(results));
   }
   std::vector<std::string> scenes;
   for (const auto& r : results)
     if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
   for (const std::string& scene : scenes) {
-    bench::plot_pareto(results, scene, a.out_dir + "/pareto-" + scene_short_name(scene) + ".png");
-    bench::plot_pass_times(results, scene, a.out_dir + "/passes-" + scene_short_name(scene) + ".png");
+    bench::plot_pareto(results, scene, dir + "/pareto-" + scene_short_name(scene) + ".png");
+    bench::plot_pass_times(results, scene, dir + "/passes-" + scene_short_name(scene) + ".png");
   }
   const std::string report = bench::results_markdown(o, results);
-  write_file_atomically(a.out_dir + "/report.md", report);
+  write_file_atomically(dir + "/report.md", report);
+  print_written(a.out_dir, staged.commit());
   std::printf("%s", report.c_str());
   if (a.target_psnr > 0) {
     std::printf("\ncheapest technique reaching %.1f dB:\n", a.target_psnr);
@@ -189,8 +194,6 @@ int run_bench_command(BenchArgs a) {
                        : "none of the techniques");
     }
   }
-  std::fprintf(stderr, "wrote %s/bench.json, bench.csv, report.md, pareto-*.png, passes-*.png%s\n", a.out_dir.c_str(),
-               a.from_json.empty() ? ", crops-*.png" : "");
   return 0;
 }
 

@@ -38,16 +38,20 @@ int run_compare(const CompareArgs& a) {
   if (a.json) {
     nlohmann::json out = {{"image", a.image},
                           {"reference", a.reference},
-                          {"psnr_db", std::isfinite(c.psnr_db) ? nlohmann::json(c.psnr_db) : nlohmann::json("inf")},
+                          // Identical images have no finite PSNR: null (JSON has no infinity), and
+                          // "identical" says why.
+                          {"psnr_db", std::isfinite(c.psnr_db) ? nlohmann::json(c.psnr_db) : nlohmann::json()},
+                          {"identical", !(c.mse > 0.0)},
                           {"ssim", c.ssim},
                           {"luma_error_share_percent", c.luma_error_share},
                           {"luma_threshold", a.luma_threshold}};
     // File names are any bytes: invalid UTF-8 is printed as U+FFFD rather than failing.
     std::printf("%s\n", out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   } else {
-    std::printf("%s against %s\n  PSNR %.2f dB   SSIM %.4f   luminance error > %.4f: %.2f%% of pixels\n",
-                a.image.c_str(), a.reference.c_str(), c.psnr_db, c.ssim, a.luma_threshold,
-                c.luma_error_share);
+    char psnr[32] = "identical images";
+    if (std::isfinite(c.psnr_db)) std::snprintf(psnr, sizeof psnr, "%.2f dB", c.psnr_db);
+    std::printf("%s against %s\n  PSNR %s   SSIM %.4f   luminance error > %.4f: %.2f%% of pixels\n", a.image.c_str(),
+                a.reference.c_str(), psnr, c.ssim, a.luma_threshold, c.luma_error_share);
   }
   return 0;
 }

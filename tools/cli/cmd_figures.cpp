@@ -9,6 +9,7 @@
 #include "tools/bench/paper_figures.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
+#include "tools/cli/out_dir.h"
 
 namespace rsaa::cli {
 namespace {
@@ -48,12 +49,12 @@ int run_figures(FiguresArgs a) {
     const bench::Figure f = bench::make_figure(name, o, [](const std::string& what) {
       std::fprintf(stderr, "  %s\n", what.c_str());
     });
-    bench::write_figure(f, a.out_dir);
+    // Each figure's CSV, PNG and Markdown files as one set.
+    StagedOutputs staged(a.out_dir);
+    bench::write_figure(f, staged.dir());
+    print_written(a.out_dir, staged.commit());
     std::printf("## %s\n\n%s\n", name.c_str(), f.markdown.c_str());
     std::fflush(stdout);
-    std::string files;
-    for (const auto& p : f.parts) files += (files.empty() ? "" : ", ") + p.stem + ".{csv,png}";
-    std::fprintf(stderr, "wrote %s/%s, %s.md\n", a.out_dir.c_str(), files.c_str(), name.c_str());
   }
   return 0;
 }

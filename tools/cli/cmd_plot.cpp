@@ -1,5 +1,6 @@
 // rsaa plot: a line chart of CSV columns (the trade curves of tools/trainer_trades.sh).
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 
@@ -21,6 +22,10 @@ int run_plot(const PlotArgs& a) {
   while (std::getline(list, item, ','))
     if (!item.empty()) ys.push_back(item);
   if (ys.empty()) throw std::invalid_argument("--y: name at least one column");
+  // The chart would replace the data it was drawn from.
+  std::error_code error;
+  if (std::filesystem::equivalent(a.csv, a.out, error))
+    throw std::invalid_argument("--out '" + a.out + "' is the CSV file itself; write the chart elsewhere");
   bench::plot_csv(a.csv, a.x, ys, a.log_x, a.title.empty() ? a.csv : a.title, a.out);
   std::printf("wrote %s\n", a.out.c_str());
   return 0;

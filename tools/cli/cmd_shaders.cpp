@@ -1,6 +1,7 @@
 // rsaa shaders: the engine-facing shaders for one configuration, each one self-contained text
 // (defines set, includes expanded, the offset table inlined), for engines that include files
 // without an include mechanism (SMAA-style: generate once, copy into the engine).
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -19,6 +20,7 @@ namespace {
 
 struct ShadersArgs {
   std::string out_dir, pattern = "d3d8x", table, material_edges = "off";
+  double split_cap = RsaaSettings{}.split_cap;  // parsed as a double: checked before it becomes a float
   RsaaSettings settings;
 };
 
@@ -28,23 +30,26 @@ std::string cap_text(float cap) {
   return text;
 }
 
-// The command line that made a file, for its header.
+// The command line that made a file, for its header: every option, defaults included, so that
+// running it makes the same files whatever the defaults become.
 std::string command_line(const ShadersArgs& a) {
   const RsaaSettings& s = a.settings;
   return "rsaa shaders " + (a.table.empty() ? "--pattern " + a.pattern : "--table " + a.table) +
          " --similarity " + s.similarity + " --auth " + std::to_string(s.auth) + " --code-bits " +
-         std::to_string(s.code_bits) + (s.split_cap > 0.0f ? " --split-cap " + cap_text(s.split_cap) : "") +
-         (s.multi_surface == "fetch" ? "" : " --multi-surface " + s.multi_surface) +
-         (s.split_check == "off" ? "" : " --split-check " + s.split_check) +
-         (s.fetch_check == "off" ? "" : " --fetch-check " + s.fetch_check) +
-         (s.material_edges ? " --material-edges on" : "") +
-         (s.depth == "gl" ? "" : " --depth " + s.depth) + " --prepass " + s.prepass +
-         " --first-unit " +
-         std::to_string(s.prepass_first_unit) + " --uniform-binding " + std::to_string(s.uniform_binding);
+         std::to_string(s.code_bits) + " --split-cap " + cap_text(s.split_cap) + " --multi-surface " +
+         s.multi_surface + " --split-check " + s.split_check + " --fetch-check " + s.fetch_check +
+         " --material-edges " + (s.material_edges ? "on" : "off") + " --depth " + s.depth + " --prepass " +
+         s.prepass + " --first-unit " + std::to_string(s.prepass_first_unit) + " --uniform-binding " +
+         std::to_string(s.uniform_binding);
 }
 
 int run_shaders(ShadersArgs a) {
   a.settings.material_edges = a.material_edges == "on";
+  // As RsaaPass and `rsaa render` take it: 0 or at least 1 (1e-320 would round to the paper's 0,
+  // 0.9999999999 to 1, silently).
+  if (!(a.split_cap == 0.0 || (a.split_cap >= 1.0 && std::isfinite(a.split_cap))))
+    throw std::invalid_argument("--split-cap must be 0 (the paper's split) or a finite number >= 1");
+  a.settings.split_cap = float(a.split_cap);
   const OffsetTable table = a.table.empty() ? gl::builtin_offset_table(a.pattern) : read_offset_table(a.table);
   const int n = table.pattern.size();
   const bool multisample = a.settings.prepass == "msaa";
@@ -58,7 +63,8 @@ int run_shaders(ShadersArgs a) {
                        "// The pre-pass functions (shaders/rsaa_prepass.glsl documents them). Put this text after\n"
                        "// #version 450 in both stages of the engine's pre-pass program, in the vertex stage after\n"
                        "// `#define RSAA_INCLUDE_FS 0`.\n" +
-                       defines + rsaa_shader_file("rsaa_prepass.glsl")});
+                       defines + "#define RSAA_PREPASS_SIGNATURE " + rsaa_prepass_signature(defines) + "\n" +
+                       rsaa_shader_file("rsaa_prepass.glsl")});
   files.push_back({a.out_dir + "/rsaa_post.frag",
                    "#version 450 core\n" + header +
                        "// The post-process as a complete fragment shader (shaders/rsaa_post.glsl documents its\n"
@@ -131,7 +137,7 @@ Action add_shaders_command(CLI::App& app) {
   cmd->add_option("--code-bits", s.code_bits, "Bits per stored similarity: 8 | 16 | 32")
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16, 32}));
-  cmd->add_option("--split-cap", s.split_cap, "Ours: cap of the k-means split in thresholds (>= 1); 0 = the paper's")
+  cmd->add_option("--split-cap", args->split_cap, "Ours: cap of the k-means split in thresholds (>= 1); 0 = the paper's")
       ->capture_default_str()
       ->check(finite_range(0.0, 1e30));
   cmd->add_option("--multi-surface", s.multi_surface, "Ours: fetch (the paper) | neighbours (3+ surface pixels)")
@@ -159,12 +165,16 @@ Action add_shaders_command(CLI::App& app) {
                   "record passes; a union pattern's two draws need the rsaa::pass library, RsaaPass)")
       ->capture_default_str()
       ->check(CLI::IsMember({"jittered", "msaa"}));
-  cmd->add_option("--first-unit", s.prepass_first_unit, "First of the pre-pass's three texture units")
+  // Within what every GL 4.5 driver has (16 texture units a stage, 84 uniform buffer bindings):
+  // the files are for a driver this command does not see.
+  cmd->add_option("--first-unit", s.prepass_first_unit,
+                  "First of the pre-pass's three texture units (0-13: every GL 4.5 driver has 16 a stage)")
       ->capture_default_str()
-      ->check(whole_range(0, 1000));
-  cmd->add_option("--uniform-binding", s.uniform_binding, "Uniform-buffer binding of the RsaaUniforms block")
+      ->check(whole_range(0, 13));
+  cmd->add_option("--uniform-binding", s.uniform_binding,
+                  "Uniform-buffer binding of the RsaaUniforms block (0-83: every GL 4.5 driver has 84)")
       ->capture_default_str()
-      ->check(whole_range(0, 1000));
+      ->check(whole_range(0, 83));
   return [args] { return run_shaders(*args); };
 }
 

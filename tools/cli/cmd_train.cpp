@@ -85,6 +85,7 @@ int run_train_from_scene(const TrainArgs& a) {
   bench::SceneTableOptions o;
   o.scene = a.from_scene;
   o.width = a.width, o.height = a.height, o.training_views = a.views;
+  o.generic_file = a.generic;
   gl::HeadlessContext context;
   const auto report = bench::train_scene_table(o, generic, [&](const std::string& s) {
     if (!a.quiet) std::fprintf(stderr, "%s\n", s.c_str());

@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/util/atomic_file.h"
 
@@ -20,5 +21,31 @@ inline std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir, cons
                                 (error ? " (" + error.message() + ")" : ""));
   return std::make_unique<DirectoryLock>(dir, purpose);
 }
+
+// The files a command writes as one set (a report with its plots and tables): written into a
+// staging directory inside the output directory, then committed into it together
+// (write_files_atomically) when the command succeeds. A command that fails midway (a full disk,
+// a refused input) leaves the previous set as it was, never new files beside old ones; the
+// staging directory goes with the object (and a dead run's with the next run).
+class StagedOutputs {
+ public:
+  explicit StagedOutputs(const std::string& out_dir);
+  ~StagedOutputs();
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+
+  // Where the command writes its files (a directory inside the output directory).
+  std::string dir() const;
+  // Every file written into dir(), into the output directory as one set; returns their names.
+  std::vector<std::string> commit();
+
+  static constexpr std::uint64_t kMaxStagedFileBytes = std::uint64_t{1} << 30;
+
+ private:
+  std::filesystem::path out_dir_, staging_;
+};
+
+// "wrote DIR/a, b, c" on stderr: the files a command committed.
+void print_written(const std::string& out_dir, const std::vector<std::string>& names);
 
 }  // namespace rsaa::cli

@@ -20,7 +20,7 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
   cmd->add_option("--samples", o.samples,
                   "msaa: 4 (hardware); ssaa: 8 (d3d8x) | 16 | 64; rsaa: 4 | 8 (default 8); agaa: 4 (hardware) | 8 "
                   "(jittered, default) | 16 (jittered)")
-      ->check(kWholeNumber);
+      ->check(whole_range(1, 64));  // given, a count: 0 stands for "not given" inside
   cmd->add_option("--similarity", o.similarity, "rsaa: sadp-plane (SADP or the gap between the surfaces' planes along the view ray, which finds silhouettes over grazing surfaces) | sadp | depth (the paper's two)")->capture_default_str();
   cmd->add_option("--auth", o.auth, "rsaa authentication: 0 none, 1 post-pass, 2 pre-pass")
       ->capture_default_str()

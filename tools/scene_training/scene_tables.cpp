@@ -114,8 +114,11 @@ SceneTableReport train_scene_table(const SceneTableOptions& o, const OffsetTable
     report.held_out_psnr_scene +=
         psnr(apply_offset_table(view.noaa, view.masks, report.table), view.reference) / o.held_out_views;
   }
+  // Every option that shapes the table, so that the recorded command makes it again.
   report.table.training = {{"command", "rsaa train --from-scene " + o.scene + " --width " + std::to_string(o.width) +
-                                           " --height " + std::to_string(o.height)},
+                                           " --height " + std::to_string(o.height) + " --views " +
+                                           std::to_string(o.training_views) +
+                                           (o.generic_file.empty() ? "" : " --generic " + o.generic_file)},
                            {"from_scene", o.scene},
                            {"generic_table", generic.training.value("command", std::string("?"))},
                            {"training_views", o.training_views},

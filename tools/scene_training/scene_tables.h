@@ -22,6 +22,9 @@ struct SceneTableOptions {
   int held_out_views = 3;   // positions between them, used only for measuring
   double degrees_between_views = 6.0;
   int min_pixels = 20;      // masks seen at fewer pixels keep the generic offset
+  // How the generic table was named on the command line (empty: the built-in d3d8x table), for
+  // the command the table records.
+  std::string generic_file;
 };
 
 struct SceneTableReport {
