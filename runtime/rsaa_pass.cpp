@@ -522,8 +522,10 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     multisample_ = union_ = driver_samples_union(pattern_, union_shift_, union_raster);
     if (!multisample_ && settings.prepass == "msaa")
       throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
-                                  "-sample integer target at the positions of pattern '" + pattern_.name +
-                                  "', nor two " + std::to_string(n / 2) + "-sample draws whose union they are");
+                                  "-sample integer target at the positions of pattern '" + pattern_.name + "'" +
+                                  (n % 2 == 0 && n >= 4 ? ", nor two " + std::to_string(n / 2) +
+                                                              "-sample draws whose union they are"
+                                                        : ""));
   }
   for (int k = 0; k < (n + 3) / 4; ++k) gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
   if (multisample_) {

@@ -65,6 +65,8 @@ void validate(const TechniqueOptions& o) {
   const TechniqueKind& kind = find_technique(o.technique);
   if (!o.table.empty() && o.technique != "rsaa")
     throw std::invalid_argument("--table is an rsaa option, not " + o.technique + "'s");
+  if (!o.pattern.empty() && o.technique != "rsaa")
+    throw std::invalid_argument("--pattern is an rsaa option, not " + o.technique + "'s");
   kind.validate(o);
 }
 

@@ -128,6 +128,13 @@ TEST(Cli, HostileOptionsAreRefusedWithAReason) {
   // --samples 0 stood for "not given": ssaa rendered 64 samples, noaa took it.
   EXPECT_NE(run_rsaa("render --technique noaa --samples 0 --width 8 --height 8 --out " + dir.file("a.png")).exit_code,
             0);
+  // An option of another technique, and a bench whose scenes would write the same files.
+  EXPECT_NE(run_rsaa("render --technique noaa --pattern d3d4x --width 8 --height 8 --out " + dir.file("b.png")).exit_code,
+            0);
+  EXPECT_NE(run_rsaa("bench --quick --scenes builtin:edges,builtin:edges --out-dir " + dir.file("twice")).exit_code, 0);
+  r = run_rsaa("train --pattern custom-a --out-dir " + dir.file("custom"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("needs --positions"), std::string::npos) << r.output;
   // A chart over its own data.
   test::write_text(dir.file("data.png"), "x,y\n1,2\n2,3\n");
   EXPECT_NE(run_rsaa("plot " + dir.file("data.png") + " --x x --y y --out " + dir.file("data.png")).exit_code, 0);

@@ -95,8 +95,11 @@ void validate_rsaa(const TechniqueOptions& o) {
   if (o.similarity != "sadp" && o.similarity != "depth" && o.similarity != "sadp-plane")
     bad("rsaa --similarity must be sadp, depth or sadp-plane, not '" + o.similarity + "'");
   if (o.auth < 0 || o.auth > 2) bad("rsaa --auth must be 0, 1 or 2");
+  if (!o.table.empty() && !o.pattern.empty()) bad("rsaa --table brings its own sample pattern: leave out --pattern");
   if (!o.pattern.empty()) {
-    if (n == 8 && o.pattern != "d3d8x") bad("rsaa --samples 8 uses --pattern d3d8x");
+    // Without --samples the count is the default 8: say so rather than name a --samples not given.
+    const std::string samples = o.samples ? "--samples " + std::to_string(n) : "8 subsamples (the default)";
+    if (n == 8 && o.pattern != "d3d8x") bad("rsaa " + samples + " uses --pattern d3d8x, not '" + o.pattern + "'");
     if (n == 4 && o.pattern != "gl4x" && o.pattern != "d3d4x") bad("rsaa --samples 4 uses --pattern gl4x or d3d4x");
   }
   if (o.prepass != "auto" && o.prepass != "jittered" && o.prepass != "msaa" && o.prepass != "records")
@@ -105,7 +108,6 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --prepass-cull must be off or neighbours, not '" + o.prepass_cull + "'");
   if (o.prepass_cull != "off" && (o.prepass == "msaa" || o.prepass == "records"))
     bad("rsaa --prepass-cull needs --prepass jittered (or auto)");
-  if (!o.table.empty() && !o.pattern.empty()) bad("rsaa --table brings its own sample pattern: leave out --pattern");
   if (o.code_bits != 8 && o.code_bits != 16 && o.code_bits != 32) bad("rsaa --code-bits must be 8, 16 or 32");
   if (o.threshold >= 0.0 ? !std::isfinite(o.threshold) : o.threshold != -1.0)
     bad("rsaa --threshold must be a finite number >= 0");

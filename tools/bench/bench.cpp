@@ -431,7 +431,10 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
     }
     const auto psnr = [&](const char* label) {
       const TechniqueResult* r = find(results, scene, label);
-      return r ? std::to_string(r->psnr_db).substr(0, 5) : std::string("-");
+      if (!r) return std::string("-");
+      char text[32];  // rounded, as every other table of the report (substr cut 30.678 to 30.67)
+      std::snprintf(text, sizeof text, "%.2f", r->psnr_db);
+      return std::string(text);
     };
     char best_text[128] = "-";
     if (best) std::snprintf(best_text, sizeof best_text, "%s: %.2f (%.1fx)", best->label.c_str(), best->psnr_db, best->frame_ratio);

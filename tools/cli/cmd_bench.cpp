@@ -149,6 +149,15 @@ int run_bench_command(BenchArgs a) {
   }
   if (a.scenes_given && split(a.scenes).empty()) throw std::invalid_argument("--scenes: no scene named");
   if (!a.scenes.empty()) o.scenes = split(a.scenes);
+  // Each scene's plots and crops are named after its short name: two scenes of one name (or one
+  // listed twice) would overwrite each other's files.
+  for (std::size_t i = 0; i < o.scenes.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (scene_short_name(o.scenes[i]) == scene_short_name(o.scenes[k]))
+        throw std::invalid_argument("--scenes: '" + o.scenes[k] + "' and '" + o.scenes[i] +
+                                    "' would both write pareto-" + scene_short_name(o.scenes[i]) +
+                                    ".png and the other files of that name; give each scene once, "
+                                    "from files of different names");
   if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
   add_table_rows(a, o.techniques);
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
@@ -189,9 +198,10 @@ int run_bench_command(BenchArgs a) {
     std::printf("\ncheapest technique reaching %.1f dB:\n", a.target_psnr);
     for (const std::string& scene : scenes) {
       const auto* best = bench::cheapest_reaching(results, scene, a.target_psnr);
-      std::printf("  %-20s %s\n", scene_short_name(scene).c_str(),
-                  best ? (best->label + " (" + std::to_string(best->frame_ratio).substr(0, 4) + "x noaa)").c_str()
-                       : "none of the techniques");
+      if (best)
+        std::printf("  %-20s %s (%.2fx noaa)\n", scene_short_name(scene).c_str(), best->label.c_str(), best->frame_ratio);
+      else
+        std::printf("  %-20s none of the techniques\n", scene_short_name(scene).c_str());
     }
   }
   return 0;

@@ -116,6 +116,8 @@ int run_train(const TrainArgs& a) {
     gl::HeadlessContext context;  // the pattern of this machine's GL driver
     options.pattern = query_gl_sample_pattern(gl_pattern_samples(a.pattern));
   } else if (a.positions.empty()) {
+    if (a.pattern.rfind("custom-", 0) == 0)
+      throw std::invalid_argument("--pattern " + a.pattern + " needs --positions \"x,y x,y ...\" (pixel space, +y down)");
     options.pattern = builtin_pattern(a.pattern);
   } else {
     if (gl_pattern_samples(a.pattern) == 0 && a.pattern.rfind("custom-", 0) != 0)
