@@ -94,34 +94,7 @@ TEST_F(RsaaPassApi, ACallbackDrawingWithAnotherProgramIsAnError) {
 }
 
 
-// An engine's pre-pass program: its own vertex stage (the scene's attribute 0 and camera, no
-// geometry stage) with rsaa_jitter(), and a fragment stage calling rsaa_prepass_code() with the
-// face normal from derivatives (and, with material edges, the draw's material).
-gl::Program engine_prepass_program(const RsaaPass& pass) {
-  const std::string prepass = pass.prepass_glsl();
-  const std::string vertex = "#define RSAA_INCLUDE_FS 0\n" + prepass + R"(
-layout(location = 0) in vec3 a_position;
-uniform mat4 u_view, u_projection;
-out vec3 v_view_position;
-void main() {
-  vec4 view = u_view * vec4(a_position, 1.0);
-  v_view_position = view.xyz;
-  gl_Position = rsaa_jitter(u_projection * view);
-})";
-  const std::string fragment = prepass + R"(
-in vec3 v_view_position;
-uniform uint u_primitive_base, u_material;
-layout(location = 0) out uvec4 o_code;
-void main() {
-  uint primitive = u_primitive_base + uint(gl_PrimitiveID) + 1u;
-#ifdef RSAA_MATERIAL_EDGES
-  o_code = rsaa_prepass_code(v_view_position, rsaa_face_normal(v_view_position), primitive, u_material);
-#else
-  o_code = rsaa_prepass_code(v_view_position, rsaa_face_normal(v_view_position), primitive);
-#endif
-})";
-  return gl::make_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "", "engine pre-pass");
-}
+gl::Program engine_prepass_program(const RsaaPass& pass) { return test::engine_prepass_program(pass.prepass_glsl()); }
 
 // The masks of the default scene, pre-pass drawn by the pass's program or by an engine program.
 struct MaskRun {

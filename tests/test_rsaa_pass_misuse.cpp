@@ -158,25 +158,6 @@ TEST_F(RsaaPassMisuse, APassProgramCallbackThatRebindsAPrePassUnitIsRefused) {
 // An engine program built from another pass's prepass_glsl() (other code bits, or a jittered
 // pass's text in a pass writing records, as a cached program would be after the settings or the
 // driver changed) was accepted and gave wrong masks; the pass's own text is still accepted.
-gl::Program engine_prepass_program(const std::string& prepass_glsl) {
-  const std::string vertex = "#define RSAA_INCLUDE_FS 0\n" + prepass_glsl + R"(
-layout(location = 0) in vec3 a_position;
-uniform mat4 u_view, u_projection;
-out vec3 v_view_position;
-void main() {
-  vec4 view = u_view * vec4(a_position, 1.0);
-  v_view_position = view.xyz;
-  gl_Position = rsaa_jitter(u_projection * view);
-})";
-  const std::string fragment = prepass_glsl + R"(
-in vec3 v_view_position;
-layout(location = 0) out uvec4 o_code;
-void main() {
-  o_code = rsaa_prepass_code(v_view_position, rsaa_face_normal(v_view_position), uint(gl_PrimitiveID) + 1u);
-})";
-  return gl::make_program({{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}, "", "engine pre-pass");
-}
-
 TEST_F(RsaaPassMisuse, AnotherPassesPrePassProgramIsRefused) {
   const test::SceneFrame scene("builtin:default", kWidth, kHeight);
   RsaaSettings bits8, bits32, jittered, records;
@@ -192,8 +173,8 @@ TEST_F(RsaaPassMisuse, AnotherPassesPrePassProgramIsRefused) {
     SCOPED_TRACE(c.name);
     RsaaPass pass(c.pass, kWidth, kHeight);
     const RsaaPass other(c.program, kWidth, kHeight);
-    const gl::Program own = engine_prepass_program(pass.prepass_glsl());
-    const gl::Program foreign = engine_prepass_program(other.prepass_glsl());
+    const gl::Program own = test::engine_prepass_program(pass.prepass_glsl());
+    const gl::Program foreign = test::engine_prepass_program(other.prepass_glsl());
     const auto draw_with = [&](GLuint program) {
       pass.render_subsamples_with_own_shaders(scene.frame(), [&] {
         SceneRenderer::draw(scene.gpu, scene.view, glm::vec2(0.0f), program);
