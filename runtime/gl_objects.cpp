@@ -1,5 +1,6 @@
 #include "runtime/gl_objects.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iterator>
 #include <stdexcept>
@@ -394,6 +395,17 @@ std::string format_name(GLenum format) {
     case GL_R32UI: return "GL_R32UI";
     case GL_RG32UI: return "GL_RG32UI";
     case GL_DEPTH_COMPONENT32F: return "GL_DEPTH_COMPONENT32F";
+    case GL_DEPTH_COMPONENT24: return "GL_DEPTH_COMPONENT24";
+    case GL_DEPTH_COMPONENT16: return "GL_DEPTH_COMPONENT16";
+    case GL_DEPTH24_STENCIL8: return "GL_DEPTH24_STENCIL8";
+    case GL_DEPTH32F_STENCIL8: return "GL_DEPTH32F_STENCIL8";
+    case GL_RGBA8: return "GL_RGBA8";
+    case GL_SRGB8_ALPHA8: return "GL_SRGB8_ALPHA8";
+    case GL_RGBA32F: return "GL_RGBA32F";
+    case GL_R11F_G11F_B10F: return "GL_R11F_G11F_B10F";
+    case GL_RGB10_A2: return "GL_RGB10_A2";
+    case GL_RG16F: return "GL_RG16F";
+    case GL_R32F: return "GL_R32F";
   }
   char hex[24];
   std::snprintf(hex, sizeof hex, "format 0x%04X", unsigned(format));
@@ -404,8 +416,16 @@ std::string format_name(GLenum format) {
 
 void require_texture(GLuint texture, GLenum internal_format, int width, int height,
                      const std::string& what) {
-  const std::string needs = ", needs a " + std::to_string(width) + "x" + std::to_string(height) +
-                            " " + format_name(internal_format) + " 2D texture";
+  require_texture(texture, std::vector<GLenum>{internal_format}, width, height, what);
+}
+
+void require_texture(GLuint texture, const std::vector<GLenum>& internal_formats, int width, int height,
+                     const std::string& what) {
+  std::string formats;
+  for (std::size_t k = 0; k < internal_formats.size(); ++k)
+    formats += (k == 0 ? "" : k + 1 == internal_formats.size() ? " or " : ", ") + format_name(internal_formats[k]);
+  const std::string needs = ", needs a " + std::to_string(width) + "x" + std::to_string(height) + " " + formats +
+                            " 2D texture";
   if (texture == 0 || !glIsTexture(texture))
     throw std::invalid_argument(what + ": " + std::to_string(texture) + " is not a texture" + needs);
   GLint target = 0, format = 0, w = 0, h = 0;
@@ -413,11 +433,19 @@ void require_texture(GLuint texture, GLenum internal_format, int width, int heig
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
-  if (target != GL_TEXTURE_2D || GLenum(format) != internal_format || w != width || h != height)
+  const bool known = std::find(internal_formats.begin(), internal_formats.end(), GLenum(format)) != internal_formats.end();
+  if (target != GL_TEXTURE_2D || !known || w != width || h != height)
     throw std::invalid_argument(what + ": texture " + std::to_string(texture) + " is a " +
                                 std::to_string(w) + "x" + std::to_string(h) + " " +
                                 format_name(GLenum(format)) +
                                 (target == GL_TEXTURE_2D ? "" : " non-2D") + " texture" + needs);
+  if (format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8) {
+    GLint mode = GL_DEPTH_COMPONENT;
+    glGetTextureParameteriv(texture, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);
+    if (mode != GL_DEPTH_COMPONENT)
+      throw std::invalid_argument(what + ": texture " + std::to_string(texture) +
+                                  " reads as stencil (GL_DEPTH_STENCIL_TEXTURE_MODE); the pass reads its depth");
+  }
   // Passes read (texelFetch, level 0 = the base level) and write (images, framebuffers) level 0.
   GLint base_level = 0;
   glGetTextureParameteriv(texture, GL_TEXTURE_BASE_LEVEL, &base_level);

@@ -264,7 +264,10 @@ void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSet
   gl::require_texture(frame.centre_primitive, settings.material_edges ? GL_RG32UI : GL_R32UI, width, height,
                       settings.material_edges ? "RsaaFrame::centre_primitive (material_edges: primitive, material)"
                                               : "RsaaFrame::centre_primitive");
-  gl::require_texture(frame.centre_depth, GL_DEPTH_COMPONENT32F, width, height,
+  // The engine's depth buffer as it is: with or without stencil, 32-bit float or 24-bit depth.
+  gl::require_texture(frame.centre_depth,
+                      {GL_DEPTH_COMPONENT32F, GL_DEPTH32F_STENCIL8, GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT24}, width,
+                      height,
                       "RsaaFrame::centre_depth");
   // Depth is read in the settings' convention (RsaaSettings::depth): the clip control must be its.
   GLint origin = 0, depth_mode = 0;

@@ -19,7 +19,10 @@
 //                     G-buffer's output there must then be a uvec2: a uint output leaves the
 //                     second channel undefined, which no check here can see (every triangle
 //                     edge would look like a material edge)
-//   centre_depth      GL_DEPTH_COMPONENT32F, the depth of the same draw
+//   centre_depth      the depth of the same draw: GL_DEPTH_COMPONENT32F (RsaaTargets' own), or
+//                     the engine's depth buffer as it is, GL_DEPTH32F_STENCIL8,
+//                     GL_DEPTH24_STENCIL8 or GL_DEPTH_COMPONENT24 (read as depth:
+//                     GL_DEPTH_STENCIL_TEXTURE_MODE must stay GL_DEPTH_COMPONENT)
 // rsaa_encode_normal() is in shaders/rsaa_common.glsl (installed in share/rsaa/shaders);
 // RsaaTargets allocates the four for an engine that has none of its own. render_subsamples()
 // and resolve() check the four (name, format, size) and throw

@@ -298,5 +298,39 @@ TEST_F(RsaaPassMisuse, ASwizzledFrameTextureIsRefused) {
   gl::check("swizzles");
 }
 
+
+// An engine keeps stencil in its depth buffer, or 24-bit depth: the frame's depth is taken as it
+// is (the pass reads depth through its own sampler), with the masks of 32-bit float depth, and a
+// depth-stencil texture set to read as stencil is refused.
+TEST_F(RsaaPassMisuse, TheEnginesDepthStencilBufferIsTakenAsItIs) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaPass pass(with_masks(RsaaSettings{}), kWidth, kHeight);
+  const std::vector<std::uint32_t> expected = masks_of(pass, scene.frame(), scene_draw(scene));
+  int edges = 0;
+  for (const std::uint32_t m : expected) edges += m != 0xffu;
+  ASSERT_GT(edges, 100);
+  for (const GLenum format : {GLenum(GL_DEPTH32F_STENCIL8), GLenum(GL_DEPTH24_STENCIL8)}) {
+    SCOPED_TRACE("depth format " + std::to_string(format));
+    // The scene's G-buffer drawn again with this depth buffer.
+    const gl::Texture depth = gl::make_texture_2d(format, kWidth, kHeight);
+    RsaaFrame frame = scene.frame();
+    const gl::Framebuffer framebuffer =
+        gl::make_framebuffer({{frame.colour}, {frame.centre_normal}, {frame.centre_primitive}}, {depth.get()});
+    const GLfloat far_depth = 1.0f;
+    glClearNamedFramebufferfv(framebuffer.get(), GL_DEPTH, 0, &far_depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+    SceneRenderer::draw(scene.gpu, scene.view, glm::vec2(0.0f), scene.renderer.gbuffer_program());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    frame.centre_depth = depth.get();
+    const std::vector<std::uint32_t> masks = masks_of(pass, frame, scene_draw(scene));
+    int differing = 0;
+    for (std::size_t p = 0; p < masks.size(); ++p) differing += masks[p] != expected[p];
+    EXPECT_LE(differing, format == GL_DEPTH32F_STENCIL8 ? 0 : edges / 50) << "of " << edges << " edge masks";
+    glTextureParameteri(depth.get(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+    EXPECT_THROW(masks_of(pass, frame, scene_draw(scene)), std::invalid_argument);
+  }
+  gl::check("depth-stencil frame");
+}
+
 }  // namespace
 }  // namespace rsaa

@@ -6,9 +6,12 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <sstream>
 
 #include "core/util/atomic_file.h"
+#include "core/rsaa/conventions.h"
 #include "core/rsaa/offset_table.h"
+#include "core/rsaa/sample_pattern.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/shader_library.h"
 #include "tools/cli/commands.h"
@@ -43,6 +46,51 @@ std::string command_line(const ShadersArgs& a) {
          std::to_string(s.uniform_binding);
 }
 
+// What the host does with the files when no RsaaPass drives them (RsaaPass::run_prepass,
+// write_frame_uniforms and resolve do the same), with this pattern's numbers, so that an engine
+// needs nothing but the files.
+std::string host_recipe(const ShadersArgs& a, const SamplePattern& pattern) {
+  const RsaaSettings& s = a.settings;
+  const int n = pattern.size();
+  const char* code_format = s.code_bits == 8 ? "GL_RGBA8UI" : s.code_bits == 16 ? "GL_RGBA16UI" : "GL_RGBA32UI";
+  std::ostringstream out;
+  out << "// THE HOST'S PART (what the rsaa::pass library's RsaaPass does; every name below is in this text).\n"
+      << "// The frame: colour GL_RGBA16F (linear), centre normal GL_RG16UI = rsaa_encode_normal(geometric normal,\n"
+      << "// view space), centre primitive GL_R32UI = primitive id + 1 (" << (s.material_edges ? "GL_RG32UI with the draw's material in .y" : "0: background") << "), centre depth; all of the frame's size.\n"
+      << "// The RsaaUniforms block (std140, binding " << s.uniform_binding << "): rsaa_inverse_projection of the\n"
+      << "// unjittered camera, rsaa_viewport = (width, height), rsaa_threshold = " << (s.similarity == "depth" ? "0.4 (percent of depth)" : "0.4")
+      << "\n// (the library's default), rsaa_sample_shift = (0, 0), and per subsample i the values below.\n";
+  if (s.prepass == "jittered")
+    out << "// Pre-pass: ceil(" << n << " / 4) " << code_format << " code textures cleared to 0; for each subsample i, a\n"
+        << "// framebuffer with code texture i / 4 at colour 0 and a 32-bit depth buffer cleared to "
+        << (s.depth == "reverse-z" ? "0 (GL_GREATER)" : "1 (GL_LESS)") << ", depth\n"
+        << "// writes on, no blending, glColorMaski(0, ...) writing channel i % 4 only, the centre normal, primitive\n"
+        << "// and depth at units " << s.prepass_first_unit << " to " << s.prepass_first_unit + 2
+        << " (nearest), rsaa_subsample = i, rsaa_jitter_ndc as below; draw the\n"
+        << "// frame's geometry with a program of this text (vertex: rsaa_jitter(); fragment: rsaa_prepass_code()).\n";
+  else
+    out << "// Pre-pass: one draw of the frame's geometry with a program of this text into a framebuffer with\n"
+        << "// a " << n << "-sample GL_RG32UI colour cleared to 0 and a " << n << "-sample 32-bit depth cleared to "
+        << (s.depth == "reverse-z" ? "0 (GL_GREATER)" : "1 (GL_LESS)") << ",\n"
+        << "// sample shading off, rsaa_subsample = 0, rsaa_jitter_ndc = (0, 0); then the record passes (their\n"
+        << "// files say how) write the " << code_format << " code textures.\n";
+  out << "// Post-process (rsaa_post.frag): a full-screen draw into a separate GL_RGBA16F target (it reads the\n"
+      << "// frame's colour), any vertex stage covering the viewport; units 0 colour (bilinear, clamp to edge),\n"
+      << "// 1 centre normal, 2 centre depth, 4.. the code textures, " << (s.material_edges ? "8 centre primitive, " : "")
+      << "all nearest; rsaa_subsample = -1.\n"
+      << "// Per subsample: position (pixel space, +y down), rsaa_jitter_ndc, rsaa_neighbours[i]:\n";
+  for (int i = 0; i < n; ++i) {
+    const Vec2 p = pattern.positions[i];
+    const PixelStep step = outside_pixel_towards(p);
+    const Vec2 window = pixel_to_gl({double(step.i), double(step.j)});
+    char line[200];
+    std::snprintf(line, sizeof line, "//   %2d: (%+.6g, %+.6g)  jitter (%+.6g / width, %+.6g / height)  neighbours ivec4(%d, %d, 0, 0)\n",
+                  i, p.x, p.y, -2.0 * p.x, 2.0 * p.y, int(window.x), int(window.y));
+    out << line;
+  }
+  return out.str();
+}
+
 int run_shaders(ShadersArgs a) {
   a.settings.material_edges = a.material_edges == "on";
   // As RsaaPass and `rsaa render` take it: 0 or at least 1 (1e-320 would round to the paper's 0,
@@ -62,13 +110,14 @@ int run_shaders(ShadersArgs a) {
                    header +
                        "// The pre-pass functions (shaders/rsaa_prepass.glsl documents them). Put this text after\n"
                        "// #version 450 in both stages of the engine's pre-pass program, in the vertex stage after\n"
-                       "// `#define RSAA_INCLUDE_FS 0`.\n" +
+                       "// `#define RSAA_INCLUDE_FS 0`.\n" + host_recipe(a, table.pattern) +
                        defines + "#define RSAA_PREPASS_SIGNATURE " + rsaa_prepass_signature(defines) + "\n" +
                        rsaa_shader_file("rsaa_prepass.glsl")});
   files.push_back({a.out_dir + "/rsaa_post.frag",
                    "#version 450 core\n" + header +
                        "// The post-process as a complete fragment shader (shaders/rsaa_post.glsl documents its\n"
                        "// resources), the offset table inlined: no table texture. Draw it over the frame.\n" +
+                       host_recipe(a, table.pattern) +
                        defines + "#define RSAA_TABLE_ARRAY\n" + offset_table_glsl(table) +
                        rsaa_shader_file("rsaa_post.frag")});
   if (multisample) {
@@ -78,8 +127,8 @@ int run_shaders(ShadersArgs a) {
     const std::string usage =
         "// The multisample pre-pass's record passes (shaders/rsaa_prepass_records.glsl documents them).\n"
         "// After the pre-pass draw: bind the centre textures (units --first-unit to +2), the draw's\n"
-        "// records (RG32UI, unit 0) and depths (unit 1) and, with material edges, materials (R32UI,\n"
-        "// unit 4), the code textures as images (units 0.., write-only), a buffer of 16 + 4 x width x\n"
+        "// records (RG32UI, unit 0; with material edges the material packed in) and depths (unit 1),\n"
+        "// the code textures as images (units 0.., write-only), a buffer of 16 + 4 x width x\n"
         "// height bytes at storage binding 0 whose first 16 bytes are {0, 1, 1, 0}; set rsaa_rows\n"
         "// (location 0) to (0, height); dispatch rsaa_prepass_list.comp over the image in its work\n"
         "// groups, then rsaa_post_list_size.comp (1 group), then rsaa_prepass_codes.comp indirectly\n"
