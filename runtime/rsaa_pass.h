@@ -118,8 +118,13 @@
 
 #include <glm/glm.hpp>
 
-#include "core/rsaa/offset_table.h"
 #include "core/rsaa/sample_pattern.h"
+
+namespace rsaa {
+// core/rsaa/offset_table.h (which brings nlohmann/json) is for the code that builds a table;
+// an engine that only names one includes no JSON library through this header.
+struct OffsetTable;
+}  // namespace rsaa
 
 namespace rsaa {
 

@@ -1,6 +1,7 @@
 // rsaa: the 1x frame with its G-buffer, the RsaaPass pre-pass, and the post-process.
 #include <sstream>
 
+#include "core/rsaa/offset_table.h"
 #include "runtime/rsaa_pass.h"
 #include "runtime/techniques/techniques.h"
 
