@@ -133,7 +133,8 @@ using GlName = unsigned int;
 
 struct RsaaSettings {
   // The offset table. Null: the built-in table of `pattern`. Otherwise any table (a retrained,
-  // custom-pattern or scene-specific one, read with rsaa::read_offset_table() or built in memory):
+  // custom-pattern or scene-specific one, read with rsaa::read_offset_table() or built in memory;
+  // both in core/rsaa/offset_table.h, which the engine includes for them):
   // the pre-pass then samples the table's own positions, and `pattern`, when not empty, must name
   // the table's pattern (a mismatch is refused naming both).
   std::shared_ptr<const OffsetTable> table;
