@@ -1,10 +1,14 @@
 // The rsaa command line as a user runs it: outputs, determinism, and errors on bad input.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "core/rsaa/sample_pattern.h"
+#include "runtime/camera.h"
 #include "tests/test_util.h"
 
 namespace rsaa {
@@ -178,6 +182,38 @@ TEST(Cli, ABenchReportIsWrittenWholeOrNotAtAll) {
   EXPECT_NE(r.exit_code, 0) << r.output;
   for (const auto& entry : std::filesystem::directory_iterator(second))
     EXPECT_EQ(entry.path().filename(), "report.md") << "left behind: " << entry.path();
+}
+
+
+// The generated files' host recipe gives, per subsample, the jitter the pass itself draws with
+// (an engine following it with the y sign flipped got an image a little wrong, without an error).
+TEST(Cli, ShadersGiveTheHostThePassesJitterPerSubsample) {
+  TempDir dir;
+  const auto r = run_rsaa("shaders --pattern d3d8x --out-dir " + dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const SamplePattern d3d8x = builtin_pattern("d3d8x");
+  std::istringstream text(test::read_text(dir.file("rsaa_prepass.glsl")));
+  std::string line;
+  int rows = 0;
+  while (std::getline(text, line)) {
+    int i = 0, nx = 0, ny = 0, zero1 = -1, zero2 = -1;
+    double x = 0, y = 0, jx = 0, jy = 0;
+    if (std::sscanf(line.c_str(), "// %d: (%lf, %lf) jitter (%lf / width, %lf / height) neighbours ivec4(%d, %d, %d, %d)", &i,
+                    &x, &y, &jx, &jy, &nx, &ny, &zero1, &zero2) != 9)
+      continue;
+    ASSERT_LT(i, d3d8x.size());
+    EXPECT_EQ(x, d3d8x.positions[i].x);
+    EXPECT_EQ(y, d3d8x.positions[i].y);
+    // The pass's jitter for a 1 x 1 image is the recipe's numerators.
+    const glm::vec2 jitter = jitter_ndc_for_sample(x, y, 1, 1);
+    EXPECT_FLOAT_EQ(float(jx), jitter.x) << line;
+    EXPECT_FLOAT_EQ(float(jy), jitter.y) << line;
+    const PixelStep step = outside_pixel_towards(d3d8x.positions[i]);
+    EXPECT_EQ(nx, step.i) << line;
+    EXPECT_EQ(ny, -step.j) << line;  // window space, +y up
+    ++rows;
+  }
+  EXPECT_EQ(rows, 8);
 }
 
 }  // namespace
