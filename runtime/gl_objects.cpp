@@ -202,8 +202,9 @@ namespace {
 constexpr GLenum kSampleCaps[] = {GL_MULTISAMPLE, GL_SAMPLE_MASK, GL_SAMPLE_COVERAGE, GL_SAMPLE_ALPHA_TO_COVERAGE,
                                   GL_SAMPLE_ALPHA_TO_ONE, GL_COLOR_LOGIC_OP};
 
-// Every texture target a unit has, with its binding query: SavedState puts back all of them (a
-// pass binding its units with glBindTextures and a zero name unbinds an engine's cube map too).
+// Every texture target a unit has, with its binding query: SavedState puts back all of them, so
+// that nothing a pass binds on a unit (glBindTextures with a zero name unbinds every target)
+// takes an engine's cube map or 3D texture there.
 struct TextureTargetBinding {
   GLenum target, binding;
 };
@@ -320,7 +321,14 @@ SavedState::~SavedState() {
   rasterizer_discard_ ? glEnable(GL_RASTERIZER_DISCARD) : glDisable(GL_RASTERIZER_DISCARD);
   for (std::size_t i = 0; i < std::size(kSampleCaps); ++i)
     sample_caps_[i] ? glEnable(kSampleCaps[i]) : glDisable(kSampleCaps[i]);
-  glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_[0]));  // a core context sets both faces alike
+  // A core context sets both faces alike (and accepts GL_FRONT_AND_BACK only); a compatibility one
+  // may have them differ.
+  if (polygon_mode_[0] == polygon_mode_[1]) {
+    glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygon_mode_[0]));
+  } else {
+    glPolygonMode(GL_FRONT, GLenum(polygon_mode_[0]));
+    glPolygonMode(GL_BACK, GLenum(polygon_mode_[1]));
+  }
   for (GLuint i = 0; i < GLuint(scissor_tests_.size()); ++i)
     scissor_tests_[i] ? glEnablei(GL_SCISSOR_TEST, i) : glDisablei(GL_SCISSOR_TEST, i);
   sample_shading_ ? glEnable(GL_SAMPLE_SHADING) : glDisable(GL_SAMPLE_SHADING);

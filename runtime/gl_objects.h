@@ -194,8 +194,9 @@ void set_pass_state(bool depth_test);
 // `internal_format` and width x height (a missing or wrong binding is an error, not garbage).
 void require_texture(GLuint texture, GLenum internal_format, int width, int height,
                      const std::string& what);
-// The same for a texture that may have any of `internal_formats` (the first is the one named as
-// needed). A depth-stencil one must be read as depth (GL_DEPTH_STENCIL_TEXTURE_MODE).
+// The same for a texture that may have any of `internal_formats` (the message lists them all). A
+// depth-stencil one must be read as depth (GL_DEPTH_STENCIL_TEXTURE_MODE). Every texture given
+// must have the identity swizzle: a texture read applies it, image loads, stores and copies not.
 void require_texture(GLuint texture, const std::vector<GLenum>& internal_formats, int width, int height,
                      const std::string& what);
 

@@ -30,8 +30,8 @@
 // wrong image. The pass reads the four through its own sampler objects (the colour bilinear and
 // clamped to the edge, the others nearest): their own wrap modes, minification filters, depth
 // comparison and completeness under them (a glTexImage2D texture with the default mipmap filter)
-// do not matter; a swizzle other than the identity is refused (texture reads would apply it,
-// image loads and copies not).
+// do not matter; a swizzle other than the identity is refused, on these and on the outputs
+// (texture reads would apply it, image loads, stores and copies not).
 //
 // DEPTH CONVENTION (RsaaSettings::depth). "gl", OpenGL's default: glClipControl(GL_LOWER_LEFT,
 // GL_NEGATIVE_ONE_TO_ONE), nearer is less, inverse_projection maps NDC (z = 2 depth - 1) to view
@@ -61,10 +61,11 @@
 // set culling for its geometry, but must draw with the colour mask, depth test, function and
 // writes and blending the pass set (the codes depend on them; state it changes after drawing is
 // its own business). After each call the pass checks that the current program declares the
-// block at that binding (no glUniformBlockBinding elsewhere) and was built from this pass's own
-// prepass_glsl() (its text declares a uniform named after the pass's settings and driver
-// pattern: another pass's program, or one cached across a change of settings, would write other
-// codes), that no pipeline of separable programs drew, that its units and buffer are untouched
+// block at that binding (no glUniformBlockBinding elsewhere) and was built from the
+// prepass_glsl() of a pass with this pass's pre-pass settings (its text declares a uniform named
+// after the settings the pre-pass reads: sample count, code bits, units, similarity, depth
+// convention, material edges, pre-pass kind, pre-pass authentication; a program cached across a
+// change of these, or taken from another such pass, would write other codes), that no pipeline of separable programs drew, that its units and buffer are untouched
 // and that the framebuffer and viewport are still the pass's, and throws std::logic_error naming
 // what is not.
 //
@@ -231,6 +232,9 @@ struct RsaaSettings {
 // two draws of half the samples, see RsaaSettings::prepass). Needs no GL.
 std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
                                 bool union_pattern = false);
+// The first of the record passes' four texture units (records and depths of each draw) beside
+// the pre-pass's three from `prepass_first_unit`: 0, or after those three when they start below 4.
+int rsaa_record_first_unit(int prepass_first_unit);
 // The #define lines the multisample pre-pass's record passes (shaders/rsaa_prepass_list.comp,
 // rsaa_prepass_codes.comp) need beside rsaa_shader_defines(): their resources (texture units from
 // `first_record_unit`: records, depths, the union's second draw's; code images
@@ -243,8 +247,9 @@ std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_rec
 std::string rsaa_shader_file(const std::string& name);
 
 // The name of the uniform a pre-pass built with `defines` (rsaa_shader_defines()) declares, as
-// RSAA_PREPASS_SIGNATURE (prepass_glsl() and `rsaa shaders` define it): a hash of the defines,
-// which the pass looks for in the engine's program (render_subsamples_with_own_shaders).
+// RSAA_PREPASS_SIGNATURE (prepass_glsl() and `rsaa shaders` define it): a hash of the defines
+// the pre-pass reads (not the post-process's), which the pass looks for in the engine's program
+// (render_subsamples_with_own_shaders).
 std::string rsaa_prepass_signature(const std::string& defines);
 
 // The engine's 1x frame (formats above). inverse_projection is that of the unjittered camera.
@@ -348,7 +353,7 @@ class RsaaPass {
   // Throws std::logic_error when a pre-pass draw left another uniform buffer, texture or sampler
   // on the pass's bindings.
   void require_prepass_bindings_kept(const RsaaFrame& frame) const;
-  std::string prepass_signature() const;  // rsaa_prepass_signature() of this pass's defines
+  const std::string& prepass_signature() const;  // rsaa_prepass_signature() of this pass's defines
   void make_record_programs(bool record_images);
   RsaaSettings settings_;
   SamplePattern pattern_;
@@ -360,6 +365,7 @@ class RsaaPass {
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
+  mutable std::string prepass_signature_;  // prepass_signature(), made at its first call
   GlName prepass_frame_[3] = {};  // its frame's centre_normal, centre_primitive, centre_depth
   std::int64_t list_capacity_ = 0;  // pixels the edge list holds (compute post-process)
   int width_, height_;

@@ -9,6 +9,7 @@
 
 #include "core/rsaa/sample_pattern.h"
 #include "runtime/camera.h"
+#include "runtime/rsaa_pass.h"
 #include "tests/test_util.h"
 
 namespace rsaa {
@@ -112,10 +113,10 @@ TEST(Cli, EvalTableJsonAndErrors) {
 // wrote a non-number where a number goes.
 TEST(Cli, HostileOptionsAreRefusedWithAReason) {
   TempDir dir;
-  // 10^9 fresh cases keep 100 GB of errors: refused at once, not killed by the kernel later.
-  auto r = run_rsaa("eval-table --cases 1000000000 " + std::string(RSAA_SOURCE_DIR) + "/tables/d3d8x.json");
+  // 2^32 fresh cases keep 400 GiB of errors: refused at once, not killed by the kernel later.
+  auto r = run_rsaa("eval-table --cases 4294967296 " + std::string(RSAA_SOURCE_DIR) + "/tables/d3d8x.json");
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("needs about"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("needs about 400.0 GiB"), std::string::npos) << r.output;
   // A split cap that rounds to the paper's 0 or to 1 as a float.
   for (const char* cap : {"1e-320", "0.9999999999"}) {
     r = run_rsaa("shaders --split-cap " + std::string(cap) + " --out-dir " + dir.file(cap));
@@ -123,25 +124,33 @@ TEST(Cli, HostileOptionsAreRefusedWithAReason) {
     EXPECT_FALSE(std::filesystem::exists(dir.file(cap) + "/rsaa_post.frag")) << cap;
   }
   // A unit past what every GL 4.5 driver has.
-  EXPECT_NE(run_rsaa("shaders --first-unit 1000 --out-dir " + dir.file("units")).exit_code, 0);
+  r = run_rsaa("shaders --first-unit 1000 --out-dir " + dir.file("units"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--first-unit"), std::string::npos) << r.output;
   // A driver pattern's name with another count of positions.
   r = run_rsaa("train --pattern gl8x --positions \"0.1,0.1 0.2,-0.2 -0.3,0.3 -0.1,-0.4\" --cases 100 --out-dir " +
                dir.file("gl8x"));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("gl8x has 8"), std::string::npos) << r.output;
   // --samples 0 stood for "not given": ssaa rendered 64 samples, noaa took it.
-  EXPECT_NE(run_rsaa("render --technique noaa --samples 0 --width 8 --height 8 --out " + dir.file("a.png")).exit_code,
-            0);
+  r = run_rsaa("render --technique noaa --samples 0 --width 8 --height 8 --out " + dir.file("a.png"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--samples"), std::string::npos) << r.output;
   // An option of another technique, and a bench whose scenes would write the same files.
-  EXPECT_NE(run_rsaa("render --technique noaa --pattern d3d4x --width 8 --height 8 --out " + dir.file("b.png")).exit_code,
-            0);
-  EXPECT_NE(run_rsaa("bench --quick --scenes builtin:edges,builtin:edges --out-dir " + dir.file("twice")).exit_code, 0);
+  r = run_rsaa("render --technique noaa --pattern d3d4x --width 8 --height 8 --out " + dir.file("b.png"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--pattern is an rsaa option"), std::string::npos) << r.output;
+  r = run_rsaa("bench --quick --scenes builtin:edges,builtin:edges --out-dir " + dir.file("twice"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("would both write pareto-edges.png"), std::string::npos) << r.output;
   r = run_rsaa("train --pattern custom-a --out-dir " + dir.file("custom"));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("needs --positions"), std::string::npos) << r.output;
   // A chart over its own data.
   test::write_text(dir.file("data.png"), "x,y\n1,2\n2,3\n");
-  EXPECT_NE(run_rsaa("plot " + dir.file("data.png") + " --x x --y y --out " + dir.file("data.png")).exit_code, 0);
+  r = run_rsaa("plot " + dir.file("data.png") + " --x x --y y --out " + dir.file("data.png"));
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("is the CSV file itself"), std::string::npos) << r.output;
   EXPECT_EQ(test::read_text(dir.file("data.png")), "x,y\n1,2\n2,3\n");
 }
 
@@ -165,7 +174,7 @@ TEST(Cli, ShadersRecordACommandThatMakesThemAgain) {
 }
 
 // A bench report is a set (JSON, CSV, Markdown, plots): a run that fails while writing it leaves
-// the directory's previous files as they were, never new files beside old ones.
+// the directory's previous report as it was, never new files beside old ones.
 TEST(Cli, ABenchReportIsWrittenWholeOrNotAtAll) {
   TempDir dir;
   const std::string first = dir.file("first");
@@ -175,15 +184,33 @@ TEST(Cli, ABenchReportIsWrittenWholeOrNotAtAll) {
     EXPECT_TRUE(std::filesystem::exists(first + "/" + file)) << file;
     EXPECT_NE(r.output.find(file), std::string::npos) << "the files written are named: " << file;
   }
-  // Redrawn from the JSON into a directory whose report.md cannot be replaced (a directory).
+  // A previous report, then a redraw from the JSON whose plot cannot replace its file (a
+  // directory stands there): the commit fails, and every previous file is as it was.
   const std::string second = dir.file("second");
-  std::filesystem::create_directories(second + "/report.md");
+  std::filesystem::create_directories(second + "/passes-edges.png");
+  for (const char* file : {"report.md", "pareto-edges.png"}) test::write_text(second + "/" + file, "previous");
   r = run_rsaa("bench --from-json " + first + "/bench.json --out-dir " + second);
   EXPECT_NE(r.exit_code, 0) << r.output;
-  for (const auto& entry : std::filesystem::directory_iterator(second))
-    EXPECT_EQ(entry.path().filename(), "report.md") << "left behind: " << entry.path();
+  EXPECT_NE(r.output.find("passes-edges.png"), std::string::npos) << "the error names the file: " << r.output;
+  for (const char* file : {"report.md", "pareto-edges.png"}) EXPECT_EQ(test::read_text(second + "/" + file), "previous");
+  for (const auto& entry : std::filesystem::directory_iterator(second)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "report.md" || name == "pareto-edges.png" || name == "passes-edges.png") << "left behind: " << name;
+  }
 }
 
+// The pre-pass text of `rsaa shaders` is the pass's own: an engine may draw an RsaaPass of the
+// same settings with a program built from the file (it carries the pass's signature).
+TEST(Cli, ShadersPrepassCarriesThePassesSignature) {
+  TempDir dir;
+  const auto r = run_rsaa("shaders --pattern d3d8x --out-dir " + dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  RsaaSettings settings;
+  settings.prepass = "jittered";
+  const std::string expected =
+      "#define RSAA_PREPASS_SIGNATURE " + rsaa_prepass_signature(rsaa_shader_defines(settings, 8, false)) + "\n";
+  EXPECT_NE(test::read_text(dir.file("rsaa_prepass.glsl")).find(expected), std::string::npos) << expected;
+}
 
 // The generated files' host recipe gives, per subsample, the jitter the pass itself draws with
 // (an engine following it with the y sign flipped got an image a little wrong, without an error).

@@ -114,9 +114,7 @@ int run_growth_command(const BenchArgs& a) {
     if (scenes.size() != 1) throw std::invalid_argument("--growth measures one scene: give one in --scenes");
     o.scene = scenes.front();
   }
-  if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
-    throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
-  StagedOutputs staged(a.out_dir);
+  StagedOutputs staged(a.out_dir, "rsaa bench");
   const std::string dir = staged.dir();
   gl::HeadlessContext context;
   const auto results = bench::run_growth(o, [](const std::string& what, int done, int total) {
@@ -134,6 +132,18 @@ int run_growth_command(const BenchArgs& a) {
   return 0;
 }
 
+// Each scene's plots and crops are named after its short name: two scenes of one name (or one
+// listed twice) would overwrite each other's files.
+void require_distinct_file_names(const std::vector<std::string>& scenes, const std::string& where) {
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (scene_short_name(scenes[i]) == scene_short_name(scenes[k]))
+        throw std::invalid_argument(where + ": '" + scenes[k] + "' and '" + scenes[i] + "' would both write pareto-" +
+                                    scene_short_name(scenes[i]) +
+                                    ".png and the other files of that name; give each scene once, from files of "
+                                    "different names");
+}
+
 int run_bench_command(BenchArgs a) {
   if (a.growth) return run_growth_command(a);
   bench::BenchOptions o;
@@ -149,15 +159,7 @@ int run_bench_command(BenchArgs a) {
   }
   if (a.scenes_given && split(a.scenes).empty()) throw std::invalid_argument("--scenes: no scene named");
   if (!a.scenes.empty()) o.scenes = split(a.scenes);
-  // Each scene's plots and crops are named after its short name: two scenes of one name (or one
-  // listed twice) would overwrite each other's files.
-  for (std::size_t i = 0; i < o.scenes.size(); ++i)
-    for (std::size_t k = 0; k < i; ++k)
-      if (scene_short_name(o.scenes[i]) == scene_short_name(o.scenes[k]))
-        throw std::invalid_argument("--scenes: '" + o.scenes[k] + "' and '" + o.scenes[i] +
-                                    "' would both write pareto-" + scene_short_name(o.scenes[i]) +
-                                    ".png and the other files of that name; give each scene once, "
-                                    "from files of different names");
+  require_distinct_file_names(o.scenes, "--scenes");
   if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
   add_table_rows(a, o.techniques);
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
@@ -166,10 +168,7 @@ int run_bench_command(BenchArgs a) {
     if (lights.size() != 1) throw std::invalid_argument("--lights: one count, or a list with --growth");
     o.lights = lights.front();
   }
-  if (!std::filesystem::is_directory(a.out_dir) && !std::filesystem::create_directories(a.out_dir))
-    throw std::invalid_argument("--out-dir: cannot create '" + a.out_dir + "'");
-
-  StagedOutputs staged(a.out_dir);
+  StagedOutputs staged(a.out_dir, "rsaa bench");
   const std::string dir = staged.dir();
   std::vector<bench::TechniqueResult> results;
   if (!a.from_json.empty()) {
@@ -185,7 +184,8 @@ int run_bench_command(BenchArgs a) {
   }
   std::vector<std::string> scenes;
   for (const auto& r : results)
-    if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
+    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+  require_distinct_file_names(scenes, a.from_json.empty() ? "--scenes" : a.from_json);
   for (const std::string& scene : scenes) {
     bench::plot_pareto(results, scene, dir + "/pareto-" + scene_short_name(scene) + ".png");
     bench::plot_pass_times(results, scene, dir + "/passes-" + scene_short_name(scene) + ".png");

@@ -2,7 +2,10 @@
 // of one pattern are measured on the same cases and printed side by side.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -96,12 +99,37 @@ void print_comparison(const std::vector<std::string>& files, const std::vector<T
 // case at the peak (measured: 0.95 GB for 10^7 cases, whatever the number of tables).
 constexpr double kBytesPerCase = 100.0;
 
+// A number from the first line of `path` that starts with `key` (a /proc or cgroup file), or -1.
+double read_number(const std::string& path, const std::string& key, double scale) {
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(key, 0) != 0) continue;
+    char* end = nullptr;
+    const double value = std::strtod(line.c_str() + key.size(), &end);
+    return end == line.c_str() + key.size() ? -1.0 : value * scale;
+  }
+  return -1.0;
+}
+
+// The memory this process can take: the kernel's MemAvailable (free memory and the page cache it
+// can drop), within a cgroup v2 limit where one is set (a container's memory.max).
+double available_memory_bytes() {
+  double available = read_number("/proc/meminfo", "MemAvailable:", 1024.0);
+  if (available < 0) {
+    const long pages = sysconf(_SC_AVPHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page_size > 0) available = double(pages) * double(page_size);
+  }
+  const double limit = read_number("/sys/fs/cgroup/memory.max", "", 1.0);  // "max" reads as no number
+  const double used = read_number("/sys/fs/cgroup/memory.current", "", 1.0);
+  if (limit > 0 && used >= 0 && (available < 0 || limit - used < available)) available = std::max(0.0, limit - used);
+  return available;
+}
+
 // A case count whose memory the machine does not have is refused before any work, rather than
 // the process being killed by the kernel part way (10^9 cases reached 23 GB).
 void require_memory_for(std::uint64_t cases) {
-  const long pages = sysconf(_SC_AVPHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || page_size <= 0) return;  // unknown: nothing to compare with
-  const double available = double(pages) * double(page_size), needed = double(cases) * kBytesPerCase;
+  const double available = available_memory_bytes(), needed = double(cases) * kBytesPerCase;
+  if (available < 0) return;  // unknown: nothing to compare with
   if (needed <= 0.8 * available) return;
   const auto gib = [](double bytes) {
     char text[32];

@@ -44,13 +44,14 @@ int run_figures(FiguresArgs a) {
   // Refused before the slow context and renders.
   if (std::find(known.begin(), known.end(), a.figure) == known.end() && a.figure != "all")
     throw std::invalid_argument("--figure: unknown figure '" + a.figure + "' (fig9, fig1, dcaa, agaa, memory or all)");
+  // Claimed before the renders, so that an unwritable --out-dir is said at once.
+  StagedOutputs staged(a.out_dir, "rsaa figures");
   gl::HeadlessContext context;
   for (const std::string& name : names) {
     const bench::Figure f = bench::make_figure(name, o, [](const std::string& what) {
       std::fprintf(stderr, "  %s\n", what.c_str());
     });
     // Each figure's CSV, PNG and Markdown files as one set.
-    StagedOutputs staged(a.out_dir);
     bench::write_figure(f, staged.dir());
     print_written(a.out_dir, staged.commit());
     std::printf("## %s\n\n%s\n", name.c_str(), f.markdown.c_str());

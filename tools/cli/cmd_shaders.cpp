@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/util/atomic_file.h"
+#include "core/util/shell_quote.h"
 #include "core/rsaa/conventions.h"
 #include "core/rsaa/offset_table.h"
 #include "core/rsaa/sample_pattern.h"
@@ -37,7 +38,7 @@ std::string cap_text(float cap) {
 // running it makes the same files whatever the defaults become.
 std::string command_line(const ShadersArgs& a) {
   const RsaaSettings& s = a.settings;
-  return "rsaa shaders " + (a.table.empty() ? "--pattern " + a.pattern : "--table " + a.table) +
+  return "rsaa shaders " + (a.table.empty() ? "--pattern " + a.pattern : "--table " + shell_quoted(a.table)) +
          " --similarity " + s.similarity + " --auth " + std::to_string(s.auth) + " --code-bits " +
          std::to_string(s.code_bits) + " --split-cap " + cap_text(s.split_cap) + " --multi-surface " +
          s.multi_surface + " --split-check " + s.split_check + " --fetch-check " + s.fetch_check +
@@ -122,12 +123,15 @@ int run_shaders(ShadersArgs a) {
                        rsaa_shader_file("rsaa_post.frag")});
   if (multisample) {
     // The record passes that turn the multisample draw's records into the codes the post-process
-    // reads: texture units 0-5, code images from 0, the pixel list at storage binding 0.
-    const std::string record_defines = rsaa_record_pass_defines(table.pattern, 0, 0, 0);
+    // reads: the records' units beside the pre-pass's three (as RsaaPass places them), code
+    // images from 0, the pixel list at storage binding 0.
+    const int record_unit = rsaa_record_first_unit(a.settings.prepass_first_unit);
+    const std::string record_defines = rsaa_record_pass_defines(table.pattern, record_unit, 0, 0);
     const std::string usage =
         "// The multisample pre-pass's record passes (shaders/rsaa_prepass_records.glsl documents them).\n"
         "// After the pre-pass draw: bind the centre textures (units --first-unit to +2), the draw's\n"
-        "// records (RG32UI, unit 0; with material edges the material packed in) and depths (unit 1),\n"
+        "// records (RG32UI, unit " + std::to_string(record_unit) + "; with material edges the material packed in) and depths (unit " +
+        std::to_string(record_unit + 1) + "),\n"
         "// the code textures as images (units 0.., write-only), a buffer of 16 + 4 x width x\n"
         "// height bytes at storage binding 0 whose first 16 bytes are {0, 1, 1, 0}; set rsaa_rows\n"
         "// (location 0) to (0, height); dispatch rsaa_prepass_list.comp over the image in its work\n"

@@ -1,10 +1,8 @@
 #include "tools/cli/out_dir.h"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -16,28 +14,25 @@ namespace {
 
 constexpr const char* kStagingPrefix = ".rsaa-staging-";
 
-// Staging directories of runs that died (kill -9, a crash) before removing theirs.
-void remove_dead_staging(const std::filesystem::path& out_dir) {
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(out_dir, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind(kStagingPrefix, 0) != 0 || !entry.is_directory(error)) continue;
-    const long pid = std::strtol(name.c_str() + std::char_traits<char>::length(kStagingPrefix), nullptr, 10);
-    if (pid > 0 && kill(pid_t(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove_all(entry.path(), error);
-  }
-}
-
 }  // namespace
 
-StagedOutputs::StagedOutputs(const std::string& out_dir) : out_dir_(out_dir) {
-  std::error_code made;
-  std::filesystem::create_directories(out_dir_, made);
-  if (made || !std::filesystem::is_directory(out_dir_))
-    throw std::invalid_argument("--out-dir: cannot create '" + out_dir + "'" + (made ? " (" + made.message() + ")" : ""));
-  remove_dead_staging(out_dir_);
-  staging_ = out_dir_ / (kStagingPrefix + std::to_string(getpid()));
+std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir, const std::string& purpose) {
   std::error_code error;
-  std::filesystem::remove_all(staging_, error);
+  std::filesystem::create_directories(dir, error);
+  if (error || !std::filesystem::is_directory(dir))
+    throw std::invalid_argument("--out-dir: cannot create '" + dir + "'" + (error ? " (" + error.message() + ")" : ""));
+  return std::make_unique<DirectoryLock>(dir, purpose);
+}
+
+StagedOutputs::StagedOutputs(const std::string& out_dir, const std::string& purpose)
+    : out_dir_(out_dir), lock_(claim_out_dir(out_dir, purpose)) {
+  // The directory is ours until the end (a second run into it is refused at once): any staging
+  // directory already there is a dead run's (killed, crashed).
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(out_dir_, error))
+    if (entry.path().filename().string().rfind(kStagingPrefix, 0) == 0 && entry.is_directory(error))
+      std::filesystem::remove_all(entry.path(), error);
+  staging_ = out_dir_ / (kStagingPrefix + std::to_string(getpid()));
   if (!std::filesystem::create_directory(staging_, error))
     throw std::runtime_error("--out-dir: cannot create the staging directory '" + staging_.string() + "'" +
                              (error ? " (" + error.message() + ")" : ""));
@@ -61,6 +56,8 @@ std::vector<std::string> StagedOutputs::commit() {
     names.push_back(name);
   }
   write_files_atomically(files);
+  // Committed: the staging directory is empty again for the next set.
+  for (const std::string& name : names) std::filesystem::remove(staging_ / name);
   std::sort(names.begin(), names.end());
   return names;
 }

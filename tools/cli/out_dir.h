@@ -13,36 +13,32 @@ namespace rsaa::cli {
 
 // The output directory, created if missing, and held exclusively until the files are in place:
 // a second run of `purpose` into it is refused at once instead of mixing its files with ours.
-inline std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir, const std::string& purpose) {
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error || !std::filesystem::is_directory(dir))
-    throw std::invalid_argument("--out-dir: cannot create '" + dir + "'" +
-                                (error ? " (" + error.message() + ")" : ""));
-  return std::make_unique<DirectoryLock>(dir, purpose);
-}
+std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir, const std::string& purpose);
 
-// The files a command writes as one set (a report with its plots and tables): written into a
-// staging directory inside the output directory, then committed into it together
-// (write_files_atomically) when the command succeeds. A command that fails midway (a full disk,
-// a refused input) leaves the previous set as it was, never new files beside old ones; the
-// staging directory goes with the object (and a dead run's with the next run).
+// The files a command writes as one set (a report with its plots and tables): the output
+// directory is claimed (claim_out_dir) for the whole run, the files are written into a staging
+// directory inside it, and commit() puts them into the output directory together
+// (write_files_atomically). A command that fails midway (a full disk, a refused input) leaves
+// the previous set as it was, never new files beside old ones; the staging directory goes with
+// the object (a dead run's with the next run into that directory).
 class StagedOutputs {
  public:
-  explicit StagedOutputs(const std::string& out_dir);
+  StagedOutputs(const std::string& out_dir, const std::string& purpose);
   ~StagedOutputs();
   StagedOutputs(const StagedOutputs&) = delete;
   StagedOutputs& operator=(const StagedOutputs&) = delete;
 
   // Where the command writes its files (a directory inside the output directory).
   std::string dir() const;
-  // Every file written into dir(), into the output directory as one set; returns their names.
+  // Every file written into dir() since the last commit, into the output directory as one set;
+  // returns their names.
   std::vector<std::string> commit();
 
   static constexpr std::uint64_t kMaxStagedFileBytes = std::uint64_t{1} << 30;
 
  private:
   std::filesystem::path out_dir_, staging_;
+  std::unique_ptr<DirectoryLock> lock_;
 };
 
 // "wrote DIR/a, b, c" on stderr: the files a command committed.

@@ -9,6 +9,7 @@
 #include "image/image_io.h"
 #include "image/image_metrics.h"
 #include "core/util/parallel.h"
+#include "core/util/shell_quote.h"
 #include "core/rsaa/postprocess_cpu.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"
@@ -115,10 +116,10 @@ SceneTableReport train_scene_table(const SceneTableOptions& o, const OffsetTable
         psnr(apply_offset_table(view.noaa, view.masks, report.table), view.reference) / o.held_out_views;
   }
   // Every option that shapes the table, so that the recorded command makes it again.
-  report.table.training = {{"command", "rsaa train --from-scene " + o.scene + " --width " + std::to_string(o.width) +
+  report.table.training = {{"command", "rsaa train --from-scene " + shell_quoted(o.scene) + " --width " + std::to_string(o.width) +
                                            " --height " + std::to_string(o.height) + " --views " +
                                            std::to_string(o.training_views) +
-                                           (o.generic_file.empty() ? "" : " --generic " + o.generic_file)},
+                                           (o.generic_file.empty() ? "" : " --generic " + shell_quoted(o.generic_file))},
                            {"from_scene", o.scene},
                            {"generic_table", generic.training.value("command", std::string("?"))},
                            {"training_views", o.training_views},
