@@ -165,9 +165,10 @@ vec3 rsaa_record_normal(uvec2 record) {
 
 #ifndef RSAA_PREPASS_COMPUTE
 #ifdef RSAA_PREPASS_SIGNATURE
-// Named after this pass's configuration (RsaaPass::prepass_glsl() defines the name): the pass
-// finds it in the engine's program, so that a program built from another pass's text is refused
-// rather than drawn with. GL's initial value 0, never set: it adds nothing.
+// Named after the settings the pre-pass reads (RsaaPass::prepass_glsl() and `rsaa shaders`
+// define the name, rsaa_prepass_signature()): the pass finds it in the engine's program, so that
+// a program built for other pre-pass settings is refused rather than drawn with. GL's initial
+// value 0, never set: it adds nothing.
 uniform uint RSAA_PREPASS_SIGNATURE;
 #define RSAA_SIGNED(value) ((value) + uvec4(RSAA_PREPASS_SIGNATURE))
 #else
