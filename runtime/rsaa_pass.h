@@ -251,6 +251,9 @@ std::string rsaa_shader_file(const std::string& name);
 // the pre-pass reads (not the post-process's), which the pass looks for in the engine's program
 // (render_subsamples_with_own_shaders).
 std::string rsaa_prepass_signature(const std::string& defines);
+// The pre-pass's text for `defines`: them, the signature's name, rsaa_prepass.glsl expanded
+// (RsaaPass::prepass_glsl() and `rsaa shaders` both write it).
+std::string rsaa_prepass_text(const std::string& defines);
 
 // The engine's 1x frame (formats above). inverse_projection is that of the unjittered camera.
 struct RsaaFrame {

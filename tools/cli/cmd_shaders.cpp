@@ -112,8 +112,7 @@ int run_shaders(ShadersArgs a) {
                        "// The pre-pass functions (shaders/rsaa_prepass.glsl documents them). Put this text after\n"
                        "// #version 450 in both stages of the engine's pre-pass program, in the vertex stage after\n"
                        "// `#define RSAA_INCLUDE_FS 0`.\n" + host_recipe(a, table.pattern) +
-                       defines + "#define RSAA_PREPASS_SIGNATURE " + rsaa_prepass_signature(defines) + "\n" +
-                       rsaa_shader_file("rsaa_prepass.glsl")});
+                       rsaa_prepass_text(defines)});
   files.push_back({a.out_dir + "/rsaa_post.frag",
                    "#version 450 core\n" + header +
                        "// The post-process as a complete fragment shader (shaders/rsaa_post.glsl documents its\n"
