@@ -251,6 +251,17 @@ double view_distance(const glm::mat4& inverse_projection, float depth, bool zero
   return -double(view.z) / double(view.w);
 }
 
+// The colour formats the frame's colour and resolve()'s output may have: the engine's HDR or LDR
+// target as it is. The compute post-process stores into them through image units, which take
+// these formats (not sRGB ones); the fragment paths render into them.
+const std::vector<GLenum> kColourFormats = {GL_RGBA16F, GL_RGBA32F, GL_R11F_G11F_B10F, GL_RGB10_A2, GL_RGBA8};
+
+GLenum internal_format_of(GLuint texture) {
+  GLint format = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  return GLenum(format);
+}
+
 // A missing or mismatched texture in the engine's frame is an error naming the field; a depth
 // convention other than the settings' too.
 void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSettings& settings) {
@@ -258,7 +269,7 @@ void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSet
     throw std::invalid_argument("RsaaFrame is " + std::to_string(frame.width) + "x" +
                                 std::to_string(frame.height) + ", the RsaaPass was made for " +
                                 std::to_string(width) + "x" + std::to_string(height));
-  gl::require_texture(frame.colour, GL_RGBA16F, width, height, "RsaaFrame::colour");
+  gl::require_texture(frame.colour, kColourFormats, width, height, "RsaaFrame::colour");
   gl::require_texture(frame.centre_normal, GL_RG16UI, width, height, "RsaaFrame::centre_normal");
   gl::require_texture(frame.centre_primitive, settings.material_edges ? GL_RG32UI : GL_R32UI, width, height,
                       settings.material_edges ? "RsaaFrame::centre_primitive (material_edges: primitive, material)"
@@ -362,7 +373,7 @@ void RsaaTargets::use_colour(GlName colour) {
   require_not_moved_from(gl_.get(), "RsaaTargets::use_colour");
   // Attached every call: a deleted texture stays attached to a framebuffer not bound, and its name
   // may come back as another texture.
-  if (colour) gl::require_texture(colour, GL_RGBA16F, width_, height_, "RsaaTargets::use_colour");
+  if (colour) gl::require_texture(colour, kColourFormats, width_, height_, "RsaaTargets::use_colour");
   colour_ = colour;
   glNamedFramebufferTexture(gl_->framebuffer.get(), GL_COLOR_ATTACHMENT0, this->colour(), 0);
 }
@@ -998,7 +1009,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   require_not_moved_from(gl_.get(), "RsaaPass::resolve");
   gl::check_none_pending("RsaaPass::resolve");
   validate_frame(frame, width_, height_, settings_);
-  gl::require_texture(output, GL_RGBA16F, width_, height_, "RsaaPass::resolve output");
+  gl::require_texture(output, kColourFormats, width_, height_, "RsaaPass::resolve output");
   if (settings_.output_mask && mask_output)
     gl::require_texture(mask_output, GL_R32UI, width_, height_, "RsaaPass::resolve mask_output");
   if (output == frame.colour && settings_.post != "compute")
@@ -1172,7 +1183,8 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
     glUseProgram(gl_->list_size_program.get());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    // The output's own format: the shaders' output images are declared without one (write-only).
+    glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, internal_format_of(resolved));
     if (settings_.output_mask)
       glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glUseProgram(gl_->list_resolve_program.get());
@@ -1180,7 +1192,7 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
     if (scatter) {
       // Every listed pixel resolved from the 1x colours before any of them is overwritten.
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, internal_format_of(output));
       glBindImageTexture(kMaskImageUnit, gl_->scratch.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
       glUseProgram(gl_->scatter_program.get());
       glDispatchComputeIndirect(0);

@@ -9,7 +9,11 @@
 // in to be current on the calling thread.
 //
 // THE FRAME. The engine renders its 1x frame into four textures of the pass's width x height:
-//   colour            GL_RGBA16F (linear light)
+//   colour            the engine's colour target as it is: GL_RGBA16F, GL_RGBA32F or
+//                     GL_R11F_G11F_B10F (linear light), or GL_RGB10_A2 or GL_RGBA8 (the fetch
+//                     blends the stored values: linear light, as for the float formats, unless
+//                     the engine accepts blending encoded ones); not sRGB formats (the compute
+//                     post-process stores through image units, which have none)
 //   centre_normal     GL_RG16UI: rsaa_encode_normal(geometric normal, view space); 0 = background
 //   centre_primitive  GL_R32UI: primitive id + 1 of the triangle seen (0 = background); the
 //                     pre-pass compares it with u_primitive_base + gl_PrimitiveID + 1. With
@@ -282,10 +286,10 @@ class RsaaTargets {
   static double bytes_per_pixel(bool material_edges) { return kBytesPerPixel + (material_edges ? 4 : 0); }
   // The colour texture the 1x frame is drawn into: the targets' own, or the one use_colour() set.
   GlName colour() const;
-  // Draws the colour into `colour` (GL_RGBA16F, this size; 0: the targets' own texture again)
-  // instead, for a frame resolved in place (RsaaPass::resolve with output == frame.colour): the
-  // frame goes straight into the engine's output, without a copy. Throws std::invalid_argument for
-  // another format or size.
+  // Draws the colour into `colour` (this size, one of RsaaFrame's colour formats; 0: the targets'
+  // own GL_RGBA16F texture again) instead, for a frame resolved in place (RsaaPass::resolve with
+  // output == frame.colour): the frame goes straight into the engine's output, without a copy.
+  // Throws std::invalid_argument for another format or size.
   void use_colour(GlName colour);
 
  private:
@@ -316,8 +320,9 @@ class RsaaPass {
   // The text an engine's pre-pass stages include after #version: this pass's defines, then
   // rsaa_prepass.glsl with its includes expanded.
   std::string prepass_glsl() const;
-  // Writes the anti-aliased colour into `output` (RGBA16F, the frame's size), and the mask into
-  // `mask_output` (R32UI) when settings.output_mask. Throws std::logic_error before any pre-pass
+  // Writes the anti-aliased colour into `output` (the frame's size, any of the colour formats above,
+  // not necessarily the colour's), and the mask into `mask_output` (R32UI) when
+  // settings.output_mask. Throws std::logic_error before any pre-pass
   // (or after one that did not finish), or for a frame whose normal, primitive or depth texture
   // is not the last pre-pass's: there are no codes to resolve it with. `output` may be the
   // frame's colour itself (resolved in place, post "compute" only), but not another texture that

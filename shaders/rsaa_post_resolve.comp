@@ -7,7 +7,8 @@ layout(local_size_x = 64) in;
 
 #include "rsaa_post_list.glsl"
 
-layout(binding = 0, rgba16f) uniform writeonly image2D rsaa_output;
+// No format: a write-only image takes the bound texture's (RsaaPass binds the output's own).
+layout(binding = 0) uniform writeonly image2D rsaa_output;
 #ifdef RSAA_OUTPUT_MASK
 layout(binding = 1, r32ui) uniform writeonly uimage2D rsaa_output_mask;
 #endif

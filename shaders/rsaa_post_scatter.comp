@@ -5,7 +5,8 @@
 
 layout(local_size_x = 64) in;
 
-layout(binding = 0, rgba16f) uniform writeonly image2D rsaa_output;
+// No format: a write-only image takes the bound texture's (RsaaPass binds the output's own).
+layout(binding = 0) uniform writeonly image2D rsaa_output;
 layout(binding = 1, rgba16f) uniform readonly image2D rsaa_resolved;
 
 void main() {
