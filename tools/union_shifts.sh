@@ -5,31 +5,39 @@
 # SSAA on each scene with that table and the two-draw pre-pass, beside d3d8x's 8 jittered draws.
 # Line-case RMS and images rank the shifts differently; tables/custom-gl4x-union.json is the shift
 # the images prefer. Writes OUT_DIR/union-shifts.md (a Markdown table) and the renders.
-# Usage: tools/union_shifts.sh [--width W] [--height H] [--shifts "dx,dy dx,dy ..."] [OUT_DIR]
-#   Default: 640x480, shifts "0.5,0.5 -0.125,-0.125 0.125,0.125 0.5,0 -0.25,0",
-#   OUT_DIR out/union-shifts. Pixel units, +y down (docs/conventions.md). About 3 minutes.
+# Usage: tools/union_shifts.sh [--width W] [--height H] [--shifts "dx,dy ..."] [--scenes "S ..."] [OUT_DIR]
+#   Default: 640x480, shifts "0.5,0.5 -0.125,-0.125 0.125,0.125 0.5,0 -0.25,0", eight scenes
+#   (two built-in, six assimp test models), OUT_DIR out/union-shifts. Pixel units, +y down
+#   (docs/conventions.md). About 3 minutes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 width=640
 height=480
+chosen_scenes=()
 shifts="0.5,0.5 -0.125,-0.125 0.125,0.125 0.5,0 -0.25,0"
 while [[ $# -gt 0 ]]; do
   case $1 in
     --width) width=${2:?--width needs a value}; shift 2 ;;
     --height) height=${2:?--height needs a value}; shift 2 ;;
     --shifts) shifts=${2:?--shifts needs a list}; shift 2 ;;
-    -h | --help) sed -n 2,10p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --scenes) read -r -a chosen_scenes <<<"${2:?--scenes needs a list}"; shift 2 ;;
+    -h | --help) sed -n 2,11p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "union_shifts.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) break ;;
   esac
 done
 out=${1:-out/union-shifts}
+for shift in $shifts; do
+  [[ $shift =~ ^-?[0-9]*\.?[0-9]+,-?[0-9]*\.?[0-9]+$ ]] ||
+    { echo "union_shifts.sh: --shifts: '$shift' is not dx,dy (pixels, e.g. -0.125,-0.125)" >&2; exit 2; }
+done
 rsaa=./build/rsaa
 [[ -x $rsaa ]] || bash tools/build.sh
 models=/usr/share/assimp/models
 scenes=(builtin:default builtin:grazing "$models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"
         "$models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf" "$models/OBJ/spider.obj"
         "$models/Q3D/E-AT-AT.q3o" "$models/3DS/fels.3ds" "$models/COB/dwarf.cob")
+[[ -n ${chosen_scenes[*]:-} ]] && scenes=("${chosen_scenes[@]}")
 mkdir -p "$out/tables" "$out/images"
 scene_name() { local n; n=$(basename "${1#builtin:}"); echo "${n%.*}"; }
 psnr() { $rsaa compare --json "$1" "$2" | awk -F'[:,]' '/"psnr_db"/ {printf "%.2f", $2}'; }
@@ -69,6 +77,7 @@ names=()
 for scene in "${scenes[@]}"; do
   name=$(scene_name "$scene"); [[ -n ${reference[$name]:-} ]] && names+=("$name")
 done
+[[ ${#names[@]} -gt 0 ]] || { echo "union_shifts.sh: none of the scenes is installed" >&2; exit 1; }
 
 {
   echo "Union patterns: the driver's 4x positions plus the same shifted by (dx, dy) px (+y down),"
@@ -83,7 +92,6 @@ done
   for name in "${names[@]}"; do printf ' %s |' "${d3d8x[$name]}"; done
   echo ' 0 | 0 |'
   for shift in $shifts; do
-    [[ $shift =~ ^-?[0-9.]+,-?[0-9.]+$ ]] || { echo "union_shifts.sh: shift '$shift' is not dx,dy" >&2; exit 2; }
     echo "shift $shift" >&2
     tag=$(tr ".,-" "p_m" <<<"shift$shift")
     # A shift that puts a shifted sample on a driver sample makes no 8-sample pattern: a row saying so.
