@@ -263,6 +263,7 @@ SavedState::SavedState(std::vector<int> texture_units, std::vector<int> uniform_
   glGetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
   glGetIntegerv(GL_DEPTH_FUNC, &depth_func_);
   polygon_offset_fill_ = glIsEnabled(GL_POLYGON_OFFSET_FILL);
+  framebuffer_srgb_ = glIsEnabled(GL_FRAMEBUFFER_SRGB);
   stencil_test_ = glIsEnabled(GL_STENCIL_TEST);
   const GLenum stencil_queries[2][7] = {
       {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_FAIL, GL_STENCIL_PASS_DEPTH_FAIL,
@@ -337,6 +338,7 @@ SavedState::~SavedState() {
   glDepthMask(depth_mask_);
   glDepthRangeArrayv(0, GLsizei(depth_ranges_.size() / 2), depth_ranges_.data());
   polygon_offset_fill_ ? glEnable(GL_POLYGON_OFFSET_FILL) : glDisable(GL_POLYGON_OFFSET_FILL);
+  framebuffer_srgb_ ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
   depth_test_ ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
   for (int face = 0; face < 2; ++face) {
     const GLenum side = face == 0 ? GL_FRONT : GL_BACK;

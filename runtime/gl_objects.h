@@ -113,7 +113,7 @@ void restore_indexed_buffer(const IndexedBufferBinding& b);
 
 // Saves on construction and restores on destruction the GL state a pass changes: framebuffer
 // bindings, viewports, current program, depth test/function/mask/ranges, polygon offset, blending and colour mask of
-// every draw buffer, scissor tests (every viewport index's), face culling, polygon mode, rasterizer discard, sample
+// every draw buffer, scissor tests (every viewport index's), face culling, polygon mode, sRGB writes, rasterizer discard, sample
 // shading, the vertex array, textures and sampler objects, uniform buffers (below, and the generic
 // GL_UNIFORM_BUFFER binding, which binding an indexed one also sets). So that a pass dropped into
 // an engine leaves the engine's state as it found it.
@@ -148,7 +148,7 @@ class SavedState {
   // GL_MULTISAMPLE, the sample mask and coverage operations and the colour logic op (kSampleCaps).
   GLboolean sample_caps_[6] = {};
   GLint polygon_mode_[2] = {GL_FILL, GL_FILL};  // GL_POLYGON_MODE reports front and back
-  GLboolean polygon_offset_fill_ = GL_FALSE;
+  GLboolean polygon_offset_fill_ = GL_FALSE, framebuffer_srgb_ = GL_FALSE;
   GLfloat min_sample_shading_ = 0.0f;
   GLint depth_func_ = GL_LESS, vertex_array_ = 0, active_texture_ = GL_TEXTURE0;
   // Stencil test and, per face (front, back): function, reference (as GL reports it: clamped

@@ -71,9 +71,12 @@ struct RsaaPass::Objects {
   GLint classify_group[3] = {1, 1, 1};  // the classify program's work group size
   gl::Buffer edge_list;
   // Resolving in place (output == the frame's colour): the listed pixels' colours are resolved
-  // into `scratch` (made at the first such call), then copied into the colour by `scatter_program`.
+  // into `scratch` (made at the first such call, in the output's format: RGBA32F values above half
+  // float's range, and every format's values, come back as the separate output's), then copied
+  // into the colour by `scatter_program`.
   gl::Program scatter_program;
   gl::Texture scratch;
+  GLenum scratch_format = 0;
 };
 
 namespace {
@@ -105,7 +108,9 @@ static_assert(offsetof(RsaaUniformHead, sample_shift) - kJitterOffset == offseto
 // edges) comes after the last of them.
 constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, kFirstCodeUnit = 4,
               kPrimitiveUnit = 8;
-constexpr int kPostUnits = 9;
+// The in-place resolve's scratch image, read by the copy into the colour (rsaa_post_scatter.comp).
+constexpr int kScratchUnit = 9;
+constexpr int kPostUnits = 10;
 // The compute post-process's shader storage binding (the edge list) and image units (output, mask).
 constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
 // The listing pass's image units (RSAA_CODE_IMAGES): the code textures from kFirstCodeImageUnit
@@ -123,6 +128,7 @@ int record_first_unit(int prepass_first_unit) { return rsaa_record_first_unit(pr
 // location of rsaa_post_classify.comp's rows.
 constexpr GLint64 kListHeadBytes = 16;
 constexpr GLint kClassifyRowsLocation = 0;
+constexpr GLint kOutputSrgbLocation = 1;  // rsaa_post_output.glsl's rsaa_output_srgb
 static_assert(kFirstCodeUnit + (kMaxTableSamples + 3) / 4 <= kPrimitiveUnit, "code units overlap the primitive's");
 
 // The table the pass uses: the settings' own, or the built-in one of the pattern named.
@@ -252,9 +258,11 @@ double view_distance(const glm::mat4& inverse_projection, float depth, bool zero
 }
 
 // The colour formats the frame's colour and resolve()'s output may have: the engine's HDR or LDR
-// target as it is. The compute post-process stores into them through image units, which take
-// these formats (not sRGB ones); the fragment paths render into them.
-const std::vector<GLenum> kColourFormats = {GL_RGBA16F, GL_RGBA32F, GL_R11F_G11F_B10F, GL_RGB10_A2, GL_RGBA8};
+// target as it is. The pass works in linear light: an sRGB colour is decoded as it is read, an
+// sRGB output encoded as it is written (the compute post-process stores into an RGBA8 view of it:
+// image units have no sRGB format).
+const std::vector<GLenum> kColourFormats = {GL_RGBA16F, GL_RGBA32F, GL_R11F_G11F_B10F, GL_RGB10_A2, GL_RGBA8,
+                                            GL_SRGB8_ALPHA8};
 
 GLenum internal_format_of(GLuint texture) {
   GLint format = 0;
@@ -650,7 +658,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
         "RSAA post-process edge list");
     glGetProgramiv(gl_->classify_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->classify_group);
     gl_->scatter_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_scatter.comp")}},
-                                            post_defines, "RSAA post-process in place");
+                                            post_defines + "#define RSAA_SCRATCH_UNIT " + std::to_string(kScratchUnit) + "\n",
+                                            "RSAA post-process in place");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
                                                  post_defines, "RSAA post-process resolve of the edge list");
   }
@@ -668,7 +677,7 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
   if (list_capacity_ > 0)
     bytes += double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);  // the pixel list
-  if (settings_.post == "compute" && resolves_in_place) bytes += 8.0;  // the RGBA16F scratch
+  if (settings_.post == "compute" && resolves_in_place) bytes += 8.0;  // the scratch (in an RGBA16F frame's format)
   return bytes;
 }
 
@@ -1010,6 +1019,15 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   gl::check_none_pending("RsaaPass::resolve");
   validate_frame(frame, width_, height_, settings_);
   gl::require_texture(output, kColourFormats, width_, height_, "RsaaPass::resolve output");
+  if (settings_.post == "compute" && internal_format_of(output) == GL_SRGB8_ALPHA8) {
+    GLint immutable = GL_FALSE;
+    glGetTextureParameteriv(output, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+    if (!immutable)
+      throw std::invalid_argument("RsaaPass::resolve output: texture " + std::to_string(output) +
+                                  " is GL_SRGB8_ALPHA8 with mutable storage; the compute post-process stores into "
+                                  "an RGBA8 view of an sRGB output, which needs storage made by glTexStorage2D "
+                                  "(or RsaaSettings::post \"edges\" or \"single\")");
+  }
   if (settings_.output_mask && mask_output)
     gl::require_texture(mask_output, GL_R32UI, width_, height_, "RsaaPass::resolve mask_output");
   if (output == frame.colour && settings_.post != "compute")
@@ -1030,6 +1048,9 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   for (int unit = 0; unit < kPostUnits; ++unit) units.push_back(unit);
   const gl::SavedState saved(units, {settings_.uniform_binding});
   gl::set_pass_state(false);
+  // The pass works in linear light: an sRGB output is encoded as the draws and blits write it (an
+  // sRGB colour is decoded as it is read); other formats are written as they are.
+  glEnable(GL_FRAMEBUFFER_SRGB);
   std::vector<gl::Attachment> targets = {{output}};
   if (settings_.output_mask) {
     if (!mask_output) throw std::invalid_argument("RSAA resolve: output_mask set but no mask texture");
@@ -1128,6 +1149,39 @@ class CompleteForImageStores {
   GLint min_filter_ = GL_NEAREST;
   bool changed_ = false;
 };
+
+// Where the compute post-process stores into a texture: the texture in its own format or, for an
+// sRGB one (image units have no sRGB format), an RGBA8 view of its storage (immutable: resolve()
+// checked), which the shaders store encoded colours into (rsaa_post_output.glsl). A view per
+// call: an engine may delete a texture and make another under its name.
+class OutputImage {
+ public:
+  // 0: none (bind() must not be called).
+  explicit OutputImage(GLuint texture) : image_(texture) {
+    if (texture == 0) return;
+    format_ = internal_format_of(texture);
+    if (format_ != GL_SRGB8_ALPHA8) return;
+    GLuint view = 0;
+    glGenTextures(1, &view);
+    glTextureView(view, GL_TEXTURE_2D, texture, GL_RGBA8, 0, 1, 0, 1);
+    view_ = gl::Texture(view);
+    image_ = view, format_ = GL_RGBA8, encode_srgb_ = true;
+  }
+  // Binds the image to `unit` for writing and tells `program` whether to encode linear colours
+  // (for an sRGB texture, when `linear_colours`; else the values are stored as they come).
+  void bind(GLuint unit, GLuint program, bool linear_colours) const {
+    glBindImageTexture(unit, image_, 0, GL_FALSE, 0, GL_WRITE_ONLY, format_);
+    glProgramUniform1i(program, kOutputSrgbLocation, encode_srgb_ && linear_colours ? 1 : 0);
+  }
+  // The texture the image unit writes: the texture or its RGBA8 view.
+  GLuint image() const { return image_; }
+
+ private:
+  GLuint image_;
+  GLenum format_ = 0;
+  bool encode_srgb_ = false;
+  gl::Texture view_;
+};
 }  // namespace
 
 // The compute post-process (RsaaSettings::post "compute"): the colour image copied as it is, a
@@ -1151,13 +1205,23 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   const int rows = int(std::min<std::int64_t>(height_, list_capacity_ / width_));
   const bool one_round = rows == height_;
   const bool in_place = output == frame.colour;
-  if (in_place && gl_->scratch.get() == 0) gl_->scratch = gl::make_texture_2d(GL_RGBA16F, width_, height_);
+  const GLenum output_format = internal_format_of(output);
+  if (in_place && gl_->scratch_format != output_format) {
+    gl_->scratch = gl::make_texture_2d(output_format, width_, height_);
+    gl_->scratch_format = output_format;
+  }
   // In place in one round, the image already holds every edge-free pixel's colour: no copy; the
   // listed pixels are resolved into the scratch image, then copied over. In several rounds a
   // round's copy would overwrite 1x colours the next round's resolve reads: the image is resolved
   // into the scratch image as into a separate output, then copied back whole.
   const bool scatter = in_place && one_round;
   const GLuint resolved = in_place ? gl_->scratch.get() : output;
+  const OutputImage resolved_image(resolved);
+  const OutputImage output_image(scatter ? output : 0);
+  if (scatter) {  // the scratch as it is stored (an sRGB one's encoded bytes, through its view)
+    glBindTextureUnit(kScratchUnit, resolved_image.image());
+    glBindSampler(kScratchUnit, gl_->nearest.get());
+  }
   if (!in_place)
     copy_colour(frame.colour, output);
   else if (!one_round)
@@ -1183,8 +1247,7 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
     glUseProgram(gl_->list_size_program.get());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    // The output's own format: the shaders' output images are declared without one (write-only).
-    glBindImageTexture(kOutputImageUnit, resolved, 0, GL_FALSE, 0, GL_WRITE_ONLY, internal_format_of(resolved));
+    resolved_image.bind(kOutputImageUnit, gl_->list_resolve_program.get(), true);
     if (settings_.output_mask)
       glBindImageTexture(kMaskImageUnit, mask_output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     glUseProgram(gl_->list_resolve_program.get());
@@ -1192,8 +1255,8 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
     if (scatter) {
       // Every listed pixel resolved from the 1x colours before any of them is overwritten.
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      glBindImageTexture(kOutputImageUnit, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, internal_format_of(output));
-      glBindImageTexture(kMaskImageUnit, gl_->scratch.get(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA16F);
+      // A copy of what the scratch stores, in the same format: encoded already for an sRGB output.
+      output_image.bind(kOutputImageUnit, gl_->scatter_program.get(), false);
       glUseProgram(gl_->scatter_program.get());
       glDispatchComputeIndirect(0);
     }

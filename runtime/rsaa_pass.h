@@ -10,10 +10,12 @@
 //
 // THE FRAME. The engine renders its 1x frame into four textures of the pass's width x height:
 //   colour            the engine's colour target as it is: GL_RGBA16F, GL_RGBA32F or
-//                     GL_R11F_G11F_B10F (linear light), or GL_RGB10_A2 or GL_RGBA8 (the fetch
-//                     blends the stored values: linear light, as for the float formats, unless
-//                     the engine accepts blending encoded ones); not sRGB formats (the compute
-//                     post-process stores through image units, which have none)
+//                     GL_R11F_G11F_B10F (linear light), GL_SRGB8_ALPHA8 (decoded as it is read,
+//                     encoded as it is written: the pass blends linear light), or GL_RGB10_A2 or
+//                     GL_RGBA8 (the fetch blends the stored values: linear light, as for the
+//                     float formats, unless the engine accepts blending encoded ones). An sRGB
+//                     output of the compute post-process needs immutable storage
+//                     (glTexStorage2D): the pass stores into an RGBA8 view of it
 //   centre_normal     GL_RG16UI: rsaa_encode_normal(geometric normal, view space); 0 = background
 //   centre_primitive  GL_R32UI: primitive id + 1 of the triangle seen (0 = background); the
 //                     pre-pass compares it with u_primitive_base + gl_PrimitiveID + 1. With

@@ -7,8 +7,7 @@ layout(local_size_x = 64) in;
 
 #include "rsaa_post_list.glsl"
 
-// No format: a write-only image takes the bound texture's (RsaaPass binds the output's own).
-layout(binding = 0) uniform writeonly image2D rsaa_output;
+#include "rsaa_post_output.glsl"
 #ifdef RSAA_OUTPUT_MASK
 layout(binding = 1, r32ui) uniform writeonly uimage2D rsaa_output_mask;
 #endif
@@ -20,7 +19,7 @@ void main() {
   ivec2 pixel = ivec2(entry & 0xffffu, entry >> 16u);
   uint mask;
   vec4 colour = rsaa_resolve(pixel, mask);
-  imageStore(rsaa_output, pixel, colour);
+  rsaa_store_output(pixel, colour);
 #ifdef RSAA_OUTPUT_MASK
   imageStore(rsaa_output_mask, pixel, uvec4(mask));
 #endif

@@ -5,14 +5,15 @@
 
 layout(local_size_x = 64) in;
 
-// No format: a write-only image takes the bound texture's (RsaaPass binds the output's own).
-layout(binding = 0) uniform writeonly image2D rsaa_output;
-layout(binding = 1, rgba16f) uniform readonly image2D rsaa_resolved;
+#include "rsaa_post_output.glsl"
+// The scratch image as stored, in the output's format (for an sRGB output, its RGBA8 view: the
+// encoded bytes, copied as they are), at texture unit RSAA_SCRATCH_UNIT.
+layout(binding = RSAA_SCRATCH_UNIT) uniform sampler2D rsaa_resolved;
 
 void main() {
   uint index = rsaa_list_index();
   if (index >= rsaa_list_count) return;
   uint entry = rsaa_list_pixels[index];
   ivec2 pixel = ivec2(entry & 0xffffu, entry >> 16u);
-  imageStore(rsaa_output, pixel, imageLoad(rsaa_resolved, pixel));
+  rsaa_store_output(pixel, texelFetch(rsaa_resolved, pixel, 0));
 }

@@ -968,91 +968,6 @@ TEST_F(RsaaPassApi, ResolvingInPlaceGivesTheSeparateOutputsImage) {
   EXPECT_NE(targets.frame(glm::mat4(1.0f)).colour, own.get());
 }
 
-// The texture's level 0 as RGBA floats (a format without alpha reads alpha 1).
-std::vector<float> read_back_floats(GLuint texture, int width, int height) {
-  std::vector<float> values(std::size_t(width) * height * 4);
-  glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(values.size() * sizeof(float)), values.data());
-  return values;
-}
-
-// A copy of `texture` in `format` (a blit converts).
-gl::Texture converted(GLuint texture, GLenum format, int width, int height) {
-  gl::Texture copy = gl::make_texture_2d(format, width, height);
-  GLuint framebuffers[2] = {};
-  glCreateFramebuffers(2, framebuffers);
-  glNamedFramebufferTexture(framebuffers[0], GL_COLOR_ATTACHMENT0, texture, 0);
-  glNamedFramebufferTexture(framebuffers[1], GL_COLOR_ATTACHMENT0, copy.get(), 0);
-  glBlitNamedFramebuffer(framebuffers[0], framebuffers[1], 0, 0, width, height, 0, 0, width, height,
-                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  glDeleteFramebuffers(2, framebuffers);
-  return copy;
-}
-
-// An engine's colour target as it is (HDR: RGBA16F, RGBA32F, R11F_G11F_B10F; LDR: RGB10_A2,
-// RGBA8), resolved into an output of the same format, separately or in place, by every
-// post-process: the RGBA16F frame's image, within the format's precision. sRGB and other formats
-// are refused, naming the ones taken.
-TEST_F(RsaaPassApi, TheEnginesColourFormatResolvesAsRgba16fDoes) {
-  constexpr int width = 160, height = 120;
-  const test::SceneFrame scene("builtin:default", width, height);
-  const RsaaFrame frame = scene.frame();
-  const struct {
-    GLenum format;
-    float tolerance;  // a few steps of the format near 1
-  } formats[] = {{GL_RGBA32F, 2e-3f}, {GL_R11F_G11F_B10F, 0.05f}, {GL_RGB10_A2, 3.0f / 1023}, {GL_RGBA8, 3.0f / 255}};
-  // The two ways the pass writes its output: image stores (compute) and a framebuffer (single;
-  // edges writes the same way).
-  for (const char* post : {"compute", "single"}) {
-    RsaaSettings settings;
-    settings.post = post;
-    RsaaPass pass(settings, width, height);
-    scene.render_subsamples(pass);
-    const gl::Texture half_float = gl::make_texture_2d(GL_RGBA16F, width, height);
-    pass.resolve(frame, half_float.get());
-    for (const auto& f : formats) {
-      for (const bool in_place : {false, true}) {
-        if (in_place && std::string(post) != "compute") continue;
-        char format[16];
-        std::snprintf(format, sizeof format, "0x%04X", unsigned(f.format));
-        SCOPED_TRACE(std::string(post) + ", format " + format + (in_place ? ", in place" : ""));
-        // The engine's frame in this format: the same 1x colours, as its target would hold them.
-        const gl::Texture colour = converted(frame.colour, f.format, width, height);
-        RsaaFrame engine_frame = frame;
-        engine_frame.colour = colour.get();
-        const std::vector<float> one_x = read_back_floats(colour.get(), width, height);
-        const gl::Texture separate = gl::make_texture_2d(f.format, width, height);
-        const GLuint output = in_place ? colour.get() : separate.get();
-        pass.resolve(engine_frame, output);
-        const std::vector<float> image = read_back_floats(output, width, height);
-        const gl::Texture expected_texture = converted(half_float.get(), f.format, width, height);
-        const std::vector<float> expected = read_back_floats(expected_texture.get(), width, height);
-        float worst = 0.0f;
-        int resampled = 0;
-        for (std::size_t k = 0; k < image.size(); ++k) {
-          worst = std::max(worst, std::abs(image[k] - expected[k]));
-          resampled += std::abs(expected[k] - one_x[k]) > 4 * f.tolerance;
-        }
-        EXPECT_LE(worst, f.tolerance);
-        EXPECT_GT(resampled, 100);  // the comparison covers resolved pixels, beyond the tolerance
-      }
-    }
-  }
-  RsaaPass pass(RsaaSettings{}, width, height);
-  scene.render_subsamples(pass);
-  for (const GLenum refused : {GLenum(GL_SRGB8_ALPHA8), GLenum(GL_RG16F)}) {
-    const gl::Texture colour = gl::make_texture_2d(refused, width, height);
-    RsaaFrame engine_frame = frame;
-    engine_frame.colour = colour.get();
-    const std::string message = invalid_argument_of([&] { pass.resolve(engine_frame, colour.get()); });
-    EXPECT_NE(message.find("RsaaFrame::colour"), std::string::npos) << message;
-    EXPECT_NE(message.find("GL_R11F_G11F_B10F"), std::string::npos) << message;
-    const gl::Texture output = gl::make_texture_2d(refused, width, height);
-    EXPECT_NE(invalid_argument_of([&] { pass.resolve(frame, output.get()); }).find("resolve output"),
-              std::string::npos);
-  }
-  gl::check("colour formats");
-}
-
 // An output that is not mipmap-complete (level 0 only, the default minification filter, as
 // glTexImage2D leaves it) takes the image as any other, in every post-process; one whose base
 // level is not 0 (the pass writes level 0) is refused, not silently left unresolved.
@@ -1259,6 +1174,133 @@ struct RsaaPassTesting {
 };
 
 namespace {
+
+// The texture's level 0 as RGBA floats (a format without alpha reads alpha 1).
+std::vector<float> read_back_floats(GLuint texture, int width, int height) {
+  std::vector<float> values(std::size_t(width) * height * 4);
+  glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(values.size() * sizeof(float)), values.data());
+  return values;
+}
+
+// A copy of `texture` in `format` (a blit converts; linear colours to an sRGB texture encoded).
+gl::Texture converted(GLuint texture, GLenum format, int width, int height) {
+  gl::Texture copy = gl::make_texture_2d(format, width, height);
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  GLuint framebuffers[2] = {};
+  glCreateFramebuffers(2, framebuffers);
+  glNamedFramebufferTexture(framebuffers[0], GL_COLOR_ATTACHMENT0, texture, 0);
+  glNamedFramebufferTexture(framebuffers[1], GL_COLOR_ATTACHMENT0, copy.get(), 0);
+  glBlitNamedFramebuffer(framebuffers[0], framebuffers[1], 0, 0, width, height, 0, 0, width, height,
+                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glDeleteFramebuffers(2, framebuffers);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+  return copy;
+}
+
+// An engine's colour target as it is (HDR: RGBA16F, RGBA32F, R11F_G11F_B10F; LDR: RGB10_A2,
+// RGBA8, and SRGB8_ALPHA8, decoded as read and encoded as written), resolved into an output of
+// the same format, separately or in place, by both ways the pass writes: the RGBA16F frame's
+// image, within the format's precision. Other formats are refused, naming the ones taken, and an
+// sRGB output of mutable storage by the compute post-process, which writes through a view.
+TEST_F(RsaaPassApi, TheEnginesColourFormatResolvesAsRgba16fDoes) {
+  constexpr int width = 160, height = 120;
+  const test::SceneFrame scene("builtin:default", width, height);
+  const RsaaFrame frame = scene.frame();
+  const struct {
+    GLenum format;
+    float tolerance;  // a few steps of the format near 1
+  } formats[] = {{GL_RGBA32F, 2e-3f},        {GL_R11F_G11F_B10F, 0.05f}, {GL_RGB10_A2, 3.0f / 1023},
+                 {GL_RGBA8, 3.0f / 255}, {GL_SRGB8_ALPHA8, 3.0f / 255}};
+  // The two ways the pass writes its output: image stores (compute) and a framebuffer (single;
+  // edges writes the same way); and compute in rounds of rows (in place: a copy of the colour
+  // into the scratch image and back).
+  for (const std::string post : {"compute", "compute in rounds", "single"}) {
+    RsaaSettings settings;
+    settings.post = post == "single" ? "single" : "compute";
+    RsaaPass pass(settings, width, height);
+    if (post == "compute in rounds") RsaaPassTesting::set_edge_list_capacity(pass, width * 7 + 3);
+    scene.render_subsamples(pass);
+    const gl::Texture half_float = gl::make_texture_2d(GL_RGBA16F, width, height);
+    pass.resolve(frame, half_float.get());
+    for (const auto& f : formats) {
+      std::vector<float> separate_image;
+      for (const bool in_place : {false, true}) {
+        if (in_place && post == "single") continue;
+        char format[16];
+        std::snprintf(format, sizeof format, "0x%04X", unsigned(f.format));
+        SCOPED_TRACE(post + ", format " + format + (in_place ? ", in place" : ""));
+        // The engine's frame in this format: the same 1x colours, as its target would hold them.
+        const gl::Texture colour = converted(frame.colour, f.format, width, height);
+        RsaaFrame engine_frame = frame;
+        engine_frame.colour = colour.get();
+        const std::vector<float> one_x = read_back_floats(colour.get(), width, height);
+        const gl::Texture separate = gl::make_texture_2d(f.format, width, height);
+        const GLuint output = in_place ? colour.get() : separate.get();
+        pass.resolve(engine_frame, output);
+        const std::vector<float> image = read_back_floats(output, width, height);
+        const gl::Texture expected_texture = converted(half_float.get(), f.format, width, height);
+        const std::vector<float> expected = read_back_floats(expected_texture.get(), width, height);
+        float worst = 0.0f;
+        int resampled = 0;
+        for (std::size_t k = 0; k < image.size(); ++k) {
+          worst = std::max(worst, std::abs(image[k] - expected[k]));
+          resampled += std::abs(expected[k] - one_x[k]) > 4 * f.tolerance;
+        }
+        EXPECT_LE(worst, f.tolerance);
+        EXPECT_GT(resampled, 100);  // the comparison covers resolved pixels, beyond the tolerance
+        EXPECT_FALSE(glIsEnabled(GL_FRAMEBUFFER_SRGB));  // the engine's setting, as it was
+        // In place: the separate output's image exactly (the scratch keeps the output's format).
+        if (in_place) EXPECT_TRUE(image == separate_image);
+        separate_image = image;
+      }
+    }
+  }
+  // HDR values beyond half float's range (65504) in an RGBA32F frame, resolved in place in one
+  // round and in rounds: the separate output's image, not clamped by a scratch or copy.
+  std::vector<float> bright = read_back_floats(frame.colour, width, height);
+  for (float& v : bright) v *= 1e5f;
+  for (const bool rounds : {false, true}) {
+    SCOPED_TRACE(rounds ? "RGBA32F x 1e5, in rounds" : "RGBA32F x 1e5");
+    RsaaPass pass(RsaaSettings{}, width, height);
+    if (rounds) RsaaPassTesting::set_edge_list_capacity(pass, width * 7 + 3);
+    scene.render_subsamples(pass);
+    std::vector<float> images[2];
+    for (const bool in_place : {false, true}) {
+      const gl::Texture colour = gl::make_texture_2d(GL_RGBA32F, width, height);
+      glTextureSubImage2D(colour.get(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, bright.data());
+      RsaaFrame engine_frame = frame;
+      engine_frame.colour = colour.get();
+      const gl::Texture separate = gl::make_texture_2d(GL_RGBA32F, width, height);
+      const GLuint output = in_place ? colour.get() : separate.get();
+      pass.resolve(engine_frame, output);
+      images[in_place] = read_back_floats(output, width, height);
+    }
+    EXPECT_TRUE(images[0] == images[1]);
+    EXPECT_GT(*std::max_element(images[1].begin(), images[1].end()), 65504.0f * 1.1f);
+  }
+  RsaaPass pass(RsaaSettings{}, width, height);
+  scene.render_subsamples(pass);
+  for (const GLenum refused : {GLenum(GL_RG16F), GLenum(GL_SRGB8)}) {
+    const gl::Texture colour = gl::make_texture_2d(refused, width, height);
+    RsaaFrame engine_frame = frame;
+    engine_frame.colour = colour.get();
+    const std::string message = invalid_argument_of([&] { pass.resolve(engine_frame, colour.get()); });
+    EXPECT_NE(message.find("RsaaFrame::colour"), std::string::npos) << message;
+    EXPECT_NE(message.find("GL_R11F_G11F_B10F"), std::string::npos) << message;
+    const gl::Texture output = gl::make_texture_2d(refused, width, height);
+    EXPECT_NE(invalid_argument_of([&] { pass.resolve(frame, output.get()); }).find("resolve output"),
+              std::string::npos);
+  }
+  GLuint mutable_srgb = 0;
+  glGenTextures(1, &mutable_srgb);
+  const gl::Texture mutable_output(mutable_srgb);
+  glBindTexture(GL_TEXTURE_2D, mutable_srgb);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  EXPECT_NE(invalid_argument_of([&] { pass.resolve(frame, mutable_srgb); }).find("glTexStorage2D"), std::string::npos);
+  gl::check("colour formats");
+}
+
 
 // An image whose edge list (every pixel) exceeds the driver's shader storage block is resolved in
 // rounds of rows, each listed and resolved in turn: the same image and masks as one round, in
