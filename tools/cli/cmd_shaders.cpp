@@ -56,7 +56,8 @@ std::string host_recipe(const ShadersArgs& a, const SamplePattern& pattern) {
   const char* code_format = s.code_bits == 8 ? "GL_RGBA8UI" : s.code_bits == 16 ? "GL_RGBA16UI" : "GL_RGBA32UI";
   std::ostringstream out;
   out << "// THE HOST'S PART (what the rsaa::pass library's RsaaPass does; every name below is in this text).\n"
-      << "// The frame: colour GL_RGBA16F (linear), centre normal GL_RG16UI = rsaa_encode_normal(geometric normal,\n"
+      << "// The frame: colour in linear light (GL_RGBA16F, another float format, or sRGB, which reads decoded),\n"
+      << "// centre normal GL_RG16UI = rsaa_encode_normal(geometric normal,\n"
       << "// view space), centre primitive GL_R32UI = primitive id + 1 (" << (s.material_edges ? "GL_RG32UI with the draw's material in .y" : "0: background") << "), centre depth; all of the frame's size.\n"
       << "// The RsaaUniforms block (std140, binding " << s.uniform_binding << "): rsaa_inverse_projection of the\n"
       << "// unjittered camera, rsaa_viewport = (width, height), rsaa_threshold = " << (s.similarity == "depth" ? "0.4 (percent of depth)" : "0.4")
@@ -75,8 +76,9 @@ std::string host_recipe(const ShadersArgs& a, const SamplePattern& pattern) {
         << (s.depth == "reverse-z" ? "0 (GL_GREATER)" : "1 (GL_LESS)") << ",\n"
         << "// sample shading off, rsaa_subsample = 0, rsaa_jitter_ndc = (0, 0); then the record passes (their\n"
         << "// files say how) write the " << code_format << " code textures.\n";
-  out << "// Post-process (rsaa_post.frag): a full-screen draw into a separate GL_RGBA16F target (it reads the\n"
-      << "// frame's colour), any vertex stage covering the viewport; units 0 colour (bilinear, clamp to edge),\n"
+  out << "// Post-process (rsaa_post.frag): a full-screen draw into a separate colour target of any format (it reads\n"
+      << "// the frame's colour; an sRGB target with GL_FRAMEBUFFER_SRGB on, so that the linear result is encoded),\n"
+      << "// any vertex stage covering the viewport; units 0 colour (bilinear, clamp to edge),\n"
       << "// 1 centre normal, 2 centre depth, 4.. the code textures, " << (s.material_edges ? "8 centre primitive, " : "")
       << "all nearest; rsaa_subsample = -1.\n"
       << "// Per subsample: position (pixel space, +y down), rsaa_jitter_ndc, rsaa_neighbours[i]:\n";
