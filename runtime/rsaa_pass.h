@@ -290,8 +290,9 @@ class RsaaTargets {
   GlName colour() const;
   // Draws the colour into `colour` (this size, one of RsaaFrame's colour formats; 0: the targets'
   // own GL_RGBA16F texture again) instead, for a frame resolved in place (RsaaPass::resolve with
-  // output == frame.colour): the frame goes straight into the engine's output, without a copy.
-  // Throws std::invalid_argument for another format or size.
+  // output == frame.colour): the frame goes straight into the engine's output, without a copy
+  // (an sRGB one is drawn with GL_FRAMEBUFFER_SRGB on, as any sRGB target, so that it holds the
+  // linear colours encoded). Throws std::invalid_argument for another format or size.
   void use_colour(GlName colour);
 
  private:
