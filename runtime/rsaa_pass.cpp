@@ -392,6 +392,7 @@ void RsaaTargets::clear(const float background[3], float far_depth) const {
   // off after its transparent draws, a scissor left on) left pixels of the last frame.
   const gl::SavedState saved({});
   gl::set_pass_state(false);
+  glEnable(GL_FRAMEBUFFER_SRGB);  // linear RGB, encoded into an sRGB colour (use_colour())
   const GLfloat colour[4] = {background[0], background[1], background[2], 1.0f};
   const GLuint zero[4] = {0, 0, 0, 0};
   const GLuint framebuffer = gl_->framebuffer.get();
@@ -677,7 +678,8 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
   if (list_capacity_ > 0)
     bytes += double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);  // the pixel list
-  if (settings_.post == "compute" && resolves_in_place) bytes += 8.0;  // the scratch (in an RGBA16F frame's format)
+  // The scratch, in the colour's format: 8 bytes for RGBA16F (4 for 32-bit formats, 16 for RGBA32F).
+  if (settings_.post == "compute" && resolves_in_place) bytes += 8.0;
   return bytes;
 }
 
@@ -1254,7 +1256,7 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
     glDispatchComputeIndirect(0);
     if (scatter) {
       // Every listed pixel resolved from the 1x colours before any of them is overwritten.
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // (the copy fetches)
       // A copy of what the scratch stores, in the same format: encoded already for an sRGB output.
       output_image.bind(kOutputImageUnit, gl_->scatter_program.get(), false);
       glUseProgram(gl_->scatter_program.get());

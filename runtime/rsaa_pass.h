@@ -103,7 +103,7 @@
 // ranges and scissor tests of every viewport index, current program, depth test/function/mask,
 // stencil test/functions/operations/masks, blending and colour masks of every draw buffer, culling, polygon mode, rasterizer discard,
 // sample shading, GL_MULTISAMPLE, sample mask and coverage, alpha to coverage/one, logic op, the
-// generic uniform buffer binding, the vertex array, the textures and sampler objects bound to units 0-8 and to
+// generic uniform buffer binding, the vertex array, the textures and sampler objects bound to units 0-9 and to
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
 // shader storage buffer at binding 0 (and the generic one), the image units it binds (0-7 at most:
 // outputs, codes, records) and the indirect-dispatch buffer, and for the record passes of the
@@ -214,7 +214,9 @@ struct RsaaSettings {
   // feature thinner than a pixel that covers no centre of the neighbourhood is missed (README:
   // "Culling the pre-pass"). Needs the jittered pre-pass.
   std::string prepass_cull = "off";
-  // How resolve() runs the post-process, always the same image (tests compare them): "compute"
+  // How resolve() runs the post-process, the same image (tests compare them: bit for bit into float
+  // outputs, within one step into 8- and 10-bit ones, whose rounding or sRGB encoding is the
+  // driver's in the fragment paths and the shader's in the compute one): "compute"
   // (default) copies the colour image, lists the pixels whose mask is not all-similar with a
   // compute shader, then resolves the listed pixels only (a second, indirect dispatch; it binds
   // shader storage buffer 0 and image units 0 and 1 meanwhile, restored after); "edges" copies,
@@ -228,7 +230,8 @@ struct RsaaSettings {
   bool output_mask = false;       // resolve() also writes the mask (R32UI) for tests
   // Where the shaders find the pass's resources: the pre-pass's three textures at units
   // prepass_first_unit to +2, the uniform block (shaders/rsaa_uniforms.glsl) at uniform_binding.
-  // The post-process, the pass's own program, uses units 0-8. Checked against the driver's limits.
+  // The post-process, the pass's own program, uses units 0-9 (9: the in-place resolve's scratch).
+  // Checked against the driver's limits.
   int prepass_first_unit = 13;
   int uniform_binding = 13;
 };

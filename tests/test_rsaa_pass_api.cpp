@@ -1291,6 +1291,33 @@ TEST_F(RsaaPassApi, TheEnginesColourFormatResolvesAsRgba16fDoes) {
     EXPECT_NE(invalid_argument_of([&] { pass.resolve(frame, output.get()); }).find("resolve output"),
               std::string::npos);
   }
+  // The engine's GL_FRAMEBUFFER_SRGB does not change the image, and is left as it was.
+  {
+    const gl::Texture colour = converted(frame.colour, GL_SRGB8_ALPHA8, width, height);
+    RsaaFrame engine_frame = frame;
+    engine_frame.colour = colour.get();
+    std::vector<float> images[2];
+    for (const bool engine_srgb : {false, true}) {
+      const gl::Texture output = gl::make_texture_2d(GL_SRGB8_ALPHA8, width, height);
+      engine_srgb ? glEnable(GL_FRAMEBUFFER_SRGB) : glDisable(GL_FRAMEBUFFER_SRGB);
+      pass.resolve(engine_frame, output.get());
+      EXPECT_EQ(glIsEnabled(GL_FRAMEBUFFER_SRGB), engine_srgb ? GL_TRUE : GL_FALSE);
+      images[engine_srgb] = read_back_floats(output.get(), width, height);
+    }
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    EXPECT_TRUE(images[0] == images[1]);
+    // RsaaTargets' clear into an sRGB colour: the linear background encoded, whatever the setting.
+    RsaaTargets targets(width, height);
+    targets.use_colour(colour.get());
+    const float background[3] = {0.2f, 0.5f, 0.9f};
+    targets.clear(background);
+    const std::vector<float> cleared = read_back_floats(colour.get(), width, height);
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    targets.clear(background);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    EXPECT_TRUE(read_back_floats(colour.get(), width, height) == cleared);
+    EXPECT_NE(cleared[0], 0.2f);  // encoded (or read back decoded: 0.2 to a step, not exactly)
+  }
   GLuint mutable_srgb = 0;
   glGenTextures(1, &mutable_srgb);
   const gl::Texture mutable_output(mutable_srgb);
