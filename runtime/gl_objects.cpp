@@ -424,6 +424,12 @@ std::string format_name(GLenum format) {
 
 }  // namespace
 
+GLenum internal_format_of(GLuint texture) {
+  GLint format = 0;
+  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  return GLenum(format);
+}
+
 void require_texture(GLuint texture, GLenum internal_format, int width, int height,
                      const std::string& what) {
   require_texture(texture, std::vector<GLenum>{internal_format}, width, height, what);
@@ -438,16 +444,16 @@ void require_texture(GLuint texture, const std::vector<GLenum>& internal_formats
                             " 2D texture";
   if (texture == 0 || !glIsTexture(texture))
     throw std::invalid_argument(what + ": " + std::to_string(texture) + " is not a texture" + needs);
-  GLint target = 0, format = 0, w = 0, h = 0;
+  GLint target = 0, w = 0, h = 0;
   glGetTextureParameteriv(texture, GL_TEXTURE_TARGET, &target);
-  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  const GLenum format = internal_format_of(texture);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &w);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &h);
-  const bool known = std::find(internal_formats.begin(), internal_formats.end(), GLenum(format)) != internal_formats.end();
+  const bool known = std::find(internal_formats.begin(), internal_formats.end(), format) != internal_formats.end();
   if (target != GL_TEXTURE_2D || !known || w != width || h != height)
     throw std::invalid_argument(what + ": texture " + std::to_string(texture) + " is a " +
                                 std::to_string(w) + "x" + std::to_string(h) + " " +
-                                format_name(GLenum(format)) +
+                                format_name(format) +
                                 (target == GL_TEXTURE_2D ? "" : " non-2D") + " texture" + needs);
   if (format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8) {
     GLint mode = GL_DEPTH_COMPONENT;

@@ -190,6 +190,9 @@ class SavedComputeState {
 // value or alpha to coverage/one) and the codes written as they are (no logic op).
 void set_pass_state(bool depth_test);
 
+// The internal format of a texture's level 0.
+GLenum internal_format_of(GLuint texture);
+
 // Throws std::invalid_argument naming `what` unless `texture` is an existing 2D texture of
 // `internal_format` and width x height (a missing or wrong binding is an error, not garbage).
 void require_texture(GLuint texture, GLenum internal_format, int width, int height,

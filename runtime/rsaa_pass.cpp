@@ -264,12 +264,6 @@ double view_distance(const glm::mat4& inverse_projection, float depth, bool zero
 const std::vector<GLenum> kColourFormats = {GL_RGBA16F, GL_RGBA32F, GL_R11F_G11F_B10F, GL_RGB10_A2, GL_RGBA8,
                                             GL_SRGB8_ALPHA8};
 
-GLenum internal_format_of(GLuint texture) {
-  GLint format = 0;
-  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-  return GLenum(format);
-}
-
 // A missing or mismatched texture in the engine's frame is an error naming the field; a depth
 // convention other than the settings' too.
 void validate_frame(const RsaaFrame& frame, int width, int height, const RsaaSettings& settings) {
@@ -1021,7 +1015,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   gl::check_none_pending("RsaaPass::resolve");
   validate_frame(frame, width_, height_, settings_);
   gl::require_texture(output, kColourFormats, width_, height_, "RsaaPass::resolve output");
-  if (settings_.post == "compute" && internal_format_of(output) == GL_SRGB8_ALPHA8) {
+  if (settings_.post == "compute" && gl::internal_format_of(output) == GL_SRGB8_ALPHA8) {
     GLint immutable = GL_FALSE;
     glGetTextureParameteriv(output, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
     if (!immutable)
@@ -1161,7 +1155,7 @@ class OutputImage {
   // 0: none (bind() must not be called).
   explicit OutputImage(GLuint texture) : image_(texture) {
     if (texture == 0) return;
-    format_ = internal_format_of(texture);
+    format_ = gl::internal_format_of(texture);
     if (format_ != GL_SRGB8_ALPHA8) return;
     GLuint view = 0;
     glGenTextures(1, &view);
@@ -1207,7 +1201,7 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   const int rows = int(std::min<std::int64_t>(height_, list_capacity_ / width_));
   const bool one_round = rows == height_;
   const bool in_place = output == frame.colour;
-  const GLenum output_format = internal_format_of(output);
+  const GLenum output_format = gl::internal_format_of(output);
   if (in_place && gl_->scratch_format != output_format) {
     gl_->scratch = gl::make_texture_2d(output_format, width_, height_);
     gl_->scratch_format = output_format;

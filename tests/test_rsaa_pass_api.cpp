@@ -1250,7 +1250,9 @@ TEST_F(RsaaPassApi, TheEnginesColourFormatResolvesAsRgba16fDoes) {
         EXPECT_GT(resampled, 100);  // the comparison covers resolved pixels, beyond the tolerance
         EXPECT_FALSE(glIsEnabled(GL_FRAMEBUFFER_SRGB));  // the engine's setting, as it was
         // In place: the separate output's image exactly (the scratch keeps the output's format).
-        if (in_place) EXPECT_TRUE(image == separate_image);
+        if (in_place) {
+          EXPECT_TRUE(image == separate_image);
+        }
         separate_image = image;
       }
     }
