@@ -11,12 +11,14 @@
 #include "runtime/gl_context.h"
 #include "tests/test_util.h"
 #include "tools/bench/bench.h"
+#include "tools/bench/chart.h"
 #include "tools/bench/copy_pass.h"
 #include "tools/bench/growth.h"
 #include "runtime/pass_timer.h"
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "image/image_metrics.h"
+#include "image/image_io.h"
 #include "core/reference/scene_shading.h"
 
 namespace rsaa {
@@ -103,6 +105,27 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   EXPECT_NE(report.find("| edges | fxaa | "), std::string::npos) << report;  // the per-pass table
   test::write_text(dir.file("broken.json"), "{\"format\": \"rsaa-bench\"}");
   EXPECT_THROW(bench::read_results_json(dir.file("broken.json"), read_options), std::runtime_error);
+  // A hand-edited measurement outside what a run can give (a PSNR of -3e9 hung the Pareto plot's
+  // grid) is refused, naming the entry and the field; the file as written reads back.
+  const std::vector<std::pair<std::string, nlohmann::json>> edits = {
+      {"psnr_db", -3e9},          {"psnr_db", 2147483646.0}, {"psnr_db", nullptr},         {"frame_ms", -1.0},
+      {"frame_ratio_to_noaa", -5.0}, {"frame_ratio_to_noaa", 1e300}, {"ssim", 2.0},          {"orbit_psnr_db", "40"},
+      {"flicker_psnr_db", 1e10},  {"luma_error_share_percent", 101.0}, {"bytes_per_pixel", -8.0}, {"copy_ms", 1e300}};
+  for (const auto& [field, value] : edits) {
+    nlohmann::json edited = json;
+    edited["results"][3][field] = value;
+    test::write_text(dir.file("edited.json"), edited.dump());
+    try {
+      bench::read_results_json(dir.file("edited.json"), read_options);
+      ADD_FAILURE() << field << " = " << value.dump() << " was read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("results[3]." + field), std::string::npos) << e.what();
+    }
+  }
+  nlohmann::json edited = json;
+  edited["results"][1]["passes"][0]["wall_ms"] = -2.0;
+  test::write_text(dir.file("edited.json"), edited.dump());
+  EXPECT_THROW(bench::read_results_json(dir.file("edited.json"), read_options), std::runtime_error);
   bench::plot_pareto(results, results[0].scene, dir.file("pareto.png"));
   bench::plot_pass_times(results, results[0].scene, dir.file("passes.png"));
   EXPECT_GT(std::filesystem::file_size(dir.file("pareto.png")), 1000u);
@@ -344,6 +367,48 @@ TEST(PlotCsv, DrawsColumnsAndRejectsBadTables) {
   test::write_text(dir.file("neg.csv"), "x,y\n-1,2\n2,3\n");
   EXPECT_THROW(bench::plot_csv(dir.file("neg.csv"), "x", {"y"}, true, "", dir.file("x.png")), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.png")));
+}
+
+// Pixels of the first line's colour (red) in a plot: the data drawn, not only the legend.
+int red_pixels(const std::string& png) {
+  const Image image = read_image(png);
+  int n = 0;
+  for (const Rgb& p : image.pixels) n += p.r > 0.3f && p.g < 0.1f && p.b < 0.1f;
+  return n;
+}
+
+// Values a double holds but a chart's arithmetic did not: a constant column of 2e7 (the padding
+// lost to rounding) drew no line, x and y near 1e16 the same; 1e308 and 1.7e308 overflowed the
+// grid lines into a crash (SIGFPE).
+TEST(PlotCsv, ExtremeButFiniteValuesAreDrawnOrRefused) {
+  test::TempDir dir;
+  for (const char* csv : {"x,y\n1,20000000\n2,20000000\n", "x,y\n1,1000\n2,1000\n",
+                          "x,y\n1e16,5\n1e16,6\n", "x,y\n1,1e16\n2,1.0000000000000002e16\n",
+                          "x,y\n-1e300,1e300\n1e300,-1e300\n"}) {
+    test::write_text(dir.file("t.csv"), csv);
+    bench::plot_csv(dir.file("t.csv"), "x", {"y"}, false, "t", dir.file("t.png"));
+    EXPECT_GT(red_pixels(dir.file("t.png")), 300) << csv;
+  }
+  test::write_text(dir.file("big.csv"), "x,y\n1,1e308\n2,1.7e308\n");
+  try {
+    bench::plot_csv(dir.file("big.csv"), "x", {"y"}, false, "t", dir.file("big.png"));
+    ADD_FAILURE() << "drawn";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("span more than can be drawn (y from 1e+308 to 1.7e+308)"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("big.png")));
+  // The figures' line charts share the ranges.
+  bench::FigureTable table;
+  table.columns = {"x", "y"};
+  table.add({1.0, 2e7});
+  table.add({2.0, 2e7});
+  bench::ChartStyle style;
+  style.title = "t";
+  bench::plot_lines(table, style, dir.file("lines.png"));
+  EXPECT_GT(std::filesystem::file_size(dir.file("lines.png")), 1000u);
+  table.rows[1][1] = 1.7e308, table.rows[0][1] = -1.7e308;
+  EXPECT_THROW(bench::plot_lines(table, style, dir.file("lines2.png")), std::runtime_error);
 }
 
 }  // namespace

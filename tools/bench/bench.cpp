@@ -303,6 +303,20 @@ std::string results_csv(const std::vector<TechniqueResult>& results) {
 
 namespace {
 constexpr std::size_t kMaxResults = 4096, kMaxResultsPerScene = 256, kMaxPasses = 64;
+
+// A measured number of a bench file, within what a run can produce: the report prints it and the
+// plots place it (a hand-edited PSNR of -3e9 hung the Pareto plot's grid, a ratio of -5 was
+// reported as "-5.0x"). `where` names the entry and the field.
+double measured(const nlohmann::json& entry, const char* field, double lo, double hi, const std::string& where) {
+  const nlohmann::json& value = entry.at(field);
+  const double v = value.is_number() ? value.get<double>() : std::nan("");
+  if (!(v >= lo && v <= hi)) {
+    char range[96];
+    std::snprintf(range, sizeof range, "a number from %g to %g", lo, hi);
+    throw std::runtime_error(where + "." + field + " is " + value.dump() + ", expected " + range);
+  }
+  return v;
+}
 }  // namespace
 
 std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOptions& o) {
@@ -326,7 +340,9 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       throw std::runtime_error("results: expected an array of at most " + std::to_string(kMaxResults) + " entries");
     std::map<std::string, std::size_t> rows_per_scene;
     std::vector<TechniqueResult> results;
-    for (const auto& e : entries) {
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      const auto& e = entries[i];
+      const std::string where = "results[" + std::to_string(i) + "]";
       TechniqueResult r;
       r.scene = e.at("scene");
       if (++rows_per_scene[r.scene] > kMaxResultsPerScene)
@@ -345,19 +361,25 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       const auto& passes = e.at("passes");
       if (!passes.is_array() || passes.size() > kMaxPasses)
         throw std::runtime_error("passes: expected an array of at most " + std::to_string(kMaxPasses) + " entries");
-      for (const auto& p : passes)
+      // Times up to a day, ratios between 1e-6 and 1e6, PSNR as the bench caps it.
+      constexpr double kLongestMs = 8.64e7;
+      for (std::size_t k = 0; k < passes.size(); ++k) {
+        const auto& p = passes[k];
+        const std::string pass_where = where + ".passes[" + std::to_string(k) + "]";
         r.pass_medians.push_back({p.at("pass"),
-                                  p.at("gl_timer_ms").is_null() ? kNoTimerQuery : p.at("gl_timer_ms").get<double>(),
-                                  p.at("wall_ms")});
-      r.frame_ms = e.at("frame_ms");
-      r.frame_ratio = e.at("frame_ratio_to_noaa");
-      r.copy_ms = e.value("copy_ms", 0.0);
-      r.psnr_db = e.at("psnr_db");
-      r.ssim = e.at("ssim");
-      r.luma_error_share = e.at("luma_error_share_percent");
-      r.orbit_psnr_db = e.at("orbit_psnr_db");
-      r.flicker_psnr_db = e.at("flicker_psnr_db");
-      r.bytes_per_pixel = e.at("bytes_per_pixel");
+                                  p.at("gl_timer_ms").is_null() ? kNoTimerQuery
+                                                                : measured(p, "gl_timer_ms", 0.0, kLongestMs, pass_where),
+                                  measured(p, "wall_ms", 0.0, kLongestMs, pass_where)});
+      }
+      r.frame_ms = measured(e, "frame_ms", 0.0, kLongestMs, where);
+      r.frame_ratio = measured(e, "frame_ratio_to_noaa", 1e-6, 1e6, where);
+      r.copy_ms = e.contains("copy_ms") ? measured(e, "copy_ms", 0.0, kLongestMs, where) : 0.0;
+      r.psnr_db = measured(e, "psnr_db", 0.0, kIdenticalDb, where);
+      r.ssim = measured(e, "ssim", -1.0, 1.0, where);
+      r.luma_error_share = measured(e, "luma_error_share_percent", 0.0, 100.0, where);
+      r.orbit_psnr_db = measured(e, "orbit_psnr_db", 0.0, kIdenticalDb, where);
+      r.flicker_psnr_db = measured(e, "flicker_psnr_db", 0.0, kIdenticalDb, where);
+      r.bytes_per_pixel = measured(e, "bytes_per_pixel", 0.0, 1e9, where);
       r.pareto = e.at("pareto");
       results.push_back(r);
     }

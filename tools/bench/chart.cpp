@@ -66,6 +66,23 @@ struct Range {
 
 }  // namespace
 
+AxisRange drawable_range(double lo, double hi, double fraction, const std::string& what) {
+  if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) return {};
+  const double magnitude = std::max({1.0, std::abs(lo), std::abs(hi)});
+  const double span = hi - lo;
+  // Spans below a millionth of the magnitude are drawn as one value: ticks a fifth of the span
+  // apart must still be distinct doubles.
+  const double pad = span > 1e-6 * magnitude ? fraction * span : std::max(fraction, 0.05) * magnitude;
+  const AxisRange r{lo - pad, hi + pad};
+  // (The grid divides the span by up to 4: it must stay finite times 4.)
+  if (!std::isfinite(r.lo) || !std::isfinite(r.hi) || !std::isfinite(4.0 * (r.hi - r.lo))) {
+    char values[128];
+    std::snprintf(values, sizeof values, "%s from %g to %g", what.c_str(), lo, hi);
+    throw std::runtime_error(std::string("the values span more than can be drawn (") + values + ")");
+  }
+  return r;
+}
+
 void write_canvas(const cv::Mat& canvas, const std::string& path) {
   Image image(canvas.cols, canvas.rows);
   for (int y = 0; y < canvas.rows; ++y)
@@ -118,14 +135,15 @@ void plot_lines(const FigureTable& t, const ChartStyle& style, const std::string
     xr.add(x_of(row[0]));
     for (std::size_t c = 1; c < row.size(); ++c) yr.add(row[c]);
   }
-  if (!(xr.hi > xr.lo)) xr.hi = xr.lo + 1;
-  if (!(yr.hi > yr.lo)) yr.hi = yr.lo + 1;
-  const double pad = 0.06 * (yr.hi - yr.lo);
-  yr.lo -= pad, yr.hi += pad;
+  const AxisRange xa = drawable_range(xr.lo, xr.hi, 0.0, style.x_label), ya = drawable_range(yr.lo, yr.hi, 0.06, style.y_label);
+  xr.lo = xa.lo, xr.hi = xa.hi, yr.lo = ya.lo, yr.hi = ya.hi;
   const auto px = [&](double x) { return left + int((x_of(x) - xr.lo) / (xr.hi - xr.lo) * (width - left - right)); };
   const auto py = [&](double y) { return height - bottom - int((y - yr.lo) / (yr.hi - yr.lo) * (height - top - bottom)); };
   const double y_step = tick_step(yr.hi - yr.lo);
-  for (double y = std::ceil(yr.lo / y_step) * y_step; y <= yr.hi; y += y_step) {
+  // Ticks counted, not accumulated: a step can be small beside the values.
+  const double first_tick = std::ceil(yr.lo / y_step);
+  for (int k = 0; k <= 20 && (first_tick + k) * y_step <= yr.hi; ++k) {
+    const double y = (first_tick + k) * y_step;
     cv::line(canvas, {left, py(y)}, {width - right, py(y)}, kGrid);
     text(canvas, number(std::abs(y) < 1e-9 * y_step ? 0.0 : y), {8, py(y) + 5});
   }

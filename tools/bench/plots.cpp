@@ -1,6 +1,7 @@
 // The bench plots, drawn with OpenCV and written through OpenImageIO (atomically).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -325,25 +326,23 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
   }
   if (xs.size() < 2) throw std::runtime_error(csv_path + ": needs at least two rows");
   double x_lo = *std::min_element(xs.begin(), xs.end()), x_hi = *std::max_element(xs.begin(), xs.end());
-  double y_lo = 1e300, y_hi = -1e300;
+  double y_lo = std::numeric_limits<double>::infinity(), y_hi = -y_lo;
   for (const auto& s : ys)
     for (double v : s) y_lo = std::min(y_lo, v), y_hi = std::max(y_hi, v);
   // A span beyond a double (1e308 and -1e308) would put every point at NaN: nothing drawn.
-  if (!std::isfinite(x_hi - x_lo) || !std::isfinite(y_hi - y_lo)) {
-    char span[160];
-    std::snprintf(span, sizeof span, "x from %g to %g, y from %g to %g", x_lo, x_hi, y_lo, y_hi);
-    throw std::runtime_error(csv_path + ": the values span more than can be drawn (" + span + ")");
+  try {
+    const AxisRange x = drawable_range(x_lo, x_hi, 0.0, "x"), y = drawable_range(y_lo, y_hi, 0.08, "y");
+    x_lo = x.lo, x_hi = x.hi, y_lo = y.lo, y_hi = y.hi;
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(csv_path + ": " + e.what());
   }
-  const double y_pad = std::max(1e-9, 0.08 * (y_hi - y_lo));
-  y_lo -= y_pad, y_hi += y_pad;
-  if (x_hi <= x_lo) x_hi = x_lo + 1;
   const int width = 800, height = 480, left = 90, right = 30, top = 50, bottom = 60;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   const auto px = [&](double x) { return left + int((x - x_lo) / (x_hi - x_lo) * (width - left - right)); };
   const auto py = [&](double y) { return height - bottom - int((y - y_lo) / (y_hi - y_lo) * (height - top - bottom)); };
   cv::rectangle(canvas, {left, top}, {width - right, height - bottom}, kInk);
   for (int t = 0; t <= 4; ++t) {
-    const double y = y_lo + t * (y_hi - y_lo) / 4;
+    const double y = y_lo + (y_hi - y_lo) * (t / 4.0);
     cv::line(canvas, {left, py(y)}, {width - right, py(y)}, kGrid);
     char label[32];
     std::snprintf(label, sizeof label, "%.4g", y);
@@ -355,7 +354,7 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
   std::vector<double> x_labels = xs;
   if (xs.size() > kMostPointLabels) {
     x_labels.clear();
-    for (int t = 0; t <= 4; ++t) x_labels.push_back(x_lo + t * (x_hi - x_lo) / 4);
+    for (int t = 0; t <= 4; ++t) x_labels.push_back(x_lo + (x_hi - x_lo) * (t / 4.0));
   }
   for (double x : x_labels) {
     char label[32];
