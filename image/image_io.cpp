@@ -40,9 +40,8 @@ std::string process_limit_text() {
 }
 
 std::string address_space_limit_text() {
-  rlimit limit{};
-  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return "";
-  return " (ulimit -v " + std::to_string(limit.rlim_cur >> 10) + ")";
+  const std::uint64_t limit = address_space_limit();
+  return limit ? " (ulimit -v " + std::to_string(limit >> 10) + ")" : "";
 }
 
 // What the process prints if it is ended while the module loads (the terminate handler below):
@@ -119,7 +118,12 @@ const OiioCodec& load_codec() {
     if (const auto entry = reinterpret_cast<Entry>(::dlsym(module, "rsaa_oiio_codec"))) return *entry();
     tried += std::string(" ") + path + ": no rsaa_oiio_codec;";
   }
-  throw std::runtime_error("cannot load the image module (OpenImageIO):" + tried);
+  // Under an address-space limit the loader fails to map the module's libraries ("failed to map
+  // segment from shared object"): say which limit.
+  const std::string limit = address_space_limit_text();
+  throw std::runtime_error("cannot load the image module (OpenImageIO):" + tried +
+                           (limit.empty() ? "" : " the address-space limit" + limit +
+                                                     " may be too small for it; raise it (ulimit -v unlimited)"));
 }
 
 // Loaded once, on first use; a failure is reported again on every use.

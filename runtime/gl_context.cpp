@@ -4,6 +4,7 @@
 #include <epoxy/gl.h>
 
 #include <cstdio>
+#include <string>
 
 #include "core/util/parallel.h"
 
@@ -47,6 +48,15 @@ void require_gl45() {
 constexpr int kThreadsKeptFree = 5;
 
 HeadlessContext::HeadlessContext() {
+  // Mesa llvmpipe reserves several hundred MiB of address space as a context starts (its
+  // threads, LLVM): under ulimit -v 300-500 MB it crashed inside the driver (SIGSEGV), below that
+  // EGL failed without saying why. Refused up front, naming the limit.
+  constexpr std::uint64_t kLeastAddressSpace = std::uint64_t{1} << 30;
+  if (const std::uint64_t limit = address_space_limit(); limit != 0 && limit < kLeastAddressSpace)
+    throw GlError("the address-space limit (ulimit -v " + std::to_string(limit >> 10) + ") is below the " +
+                  std::to_string(kLeastAddressSpace >> 20) +
+                  " MiB rsaa requires for an OpenGL context (Mesa llvmpipe crashed under less); raise it "
+                  "(ulimit -v unlimited)");
   fit_llvmpipe_threads_to_process_limit(kThreadsKeptFree);
   if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
     throw GlError("EGL lacks EGL_MESA_platform_surfaceless (install libegl-mesa0)");

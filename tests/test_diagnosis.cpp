@@ -129,5 +129,25 @@ TEST(Diagnosis, CommandWritesTheTableAndPictures) {
   EXPECT_NE(bad.output.find("rsaa"), std::string::npos) << bad.output;
 }
 
+// The table and its pictures are one set: a run whose files cannot all be put in place (here a
+// directory stands where one picture goes; a full disk alike) leaves the previous run's files as
+// they were, never new pictures beside an old table.
+TEST(Diagnosis, ARunThatCannotWriteItsSetLeavesThePreviousOne) {
+  using test::TempDir;
+  using test::run_rsaa;
+  TempDir dir;
+  std::filesystem::create_directories(dir.file("oracle.png"));
+  for (const char* f : {"diagnosis.md", "error_map.png"}) test::write_text(dir.file(f), "previous");
+  const auto r = run_rsaa("diagnose --scene builtin:edges --width 64 --height 48 --surface-samples 2 --out-dir " +
+                          dir.path());
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("oracle.png"), std::string::npos) << "the error names the file: " << r.output;
+  for (const char* f : {"diagnosis.md", "error_map.png"}) EXPECT_EQ(test::read_text(dir.file(f)), "previous") << f;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "diagnosis.md" || name == "error_map.png" || name == "oracle.png") << "left behind: " << name;
+  }
+}
+
 }  // namespace
 }  // namespace rsaa

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numeric>
 
 #include "core/reference/halfplane_lut.h"
@@ -180,6 +181,23 @@ TEST(FiguresCli, RefusesAnUnknownFigure) {
   const auto r = test::run_rsaa("figures --figure fig2 --out-dir /nonexistent/x");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("fig9, fig1, dcaa, agaa, memory"), std::string::npos) << r.output;
+}
+
+// A run's figures are one set: a run that fails on a later figure (here a scene that does not
+// load, which fig9, animating the first scene only, never reads) leaves the previous run's files
+// as they were, never its first figures beside them.
+TEST(FiguresCli, ARunThatFailsOnALaterFigureLeavesThePreviousSet) {
+  test::TempDir dir;
+  test::write_text(dir.file("broken.obj"), "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  std::filesystem::create_directories(dir.file("out"));
+  test::write_text(dir.file("out/fig9.csv"), "previous");
+  const auto r = test::run_rsaa("figures --scenes builtin:edges," + dir.file("broken.obj") +
+                                " --width 48 --height 36 --frames 2 --out-dir " + dir.file("out"));
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("broken.obj"), std::string::npos) << r.output;
+  EXPECT_EQ(test::read_text(dir.file("out/fig9.csv")), "previous");
+  for (const auto& entry : std::filesystem::directory_iterator(dir.file("out")))
+    EXPECT_EQ(entry.path().filename().string(), "fig9.csv") << "left behind";
 }
 
 }  // namespace

@@ -14,7 +14,8 @@
 #include <system_error>
 #include <thread>
 #include <vector>
-#include <vector>
+
+#include <sys/resource.h>
 
 namespace rsaa {
 
@@ -112,6 +113,12 @@ int threads_that_can_start(int at_most) {
   for (int wait = 0; before > 0 && wait < 1000 && thread_count() > before; ++wait)
     std::this_thread::sleep_for(std::chrono::microseconds(100));
   return static_cast<int>(probes.size());
+}
+
+std::uint64_t address_space_limit() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return 0;
+  return std::uint64_t(limit.rlim_cur);
 }
 
 int fit_llvmpipe_threads_to_process_limit(int room_to_keep) {

@@ -26,6 +26,9 @@ int threads_that_can_start(int at_most);
 // nothing was set.
 int fit_llvmpipe_threads_to_process_limit(int room_to_keep);
 
+// The address-space limit (ulimit -v, RLIMIT_AS) in bytes; 0 when there is none.
+std::uint64_t address_space_limit();
+
 // Calls work(begin, end) for consecutive ranges of at most `chunk` items covering [0, count).
 // threads <= 0 means default_thread_count(). Rethrows the first exception a worker threw.
 void parallel_for(std::uint64_t count, std::uint64_t chunk, int threads,

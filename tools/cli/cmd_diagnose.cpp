@@ -19,6 +19,7 @@
 #include "runtime/techniques/techniques.h"
 #include "tools/bench/diagnosis.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/out_dir.h"
 #include "tools/cli/technique_options.h"
 
 namespace rsaa::cli {
@@ -87,6 +88,9 @@ int run_diagnose(const DiagnoseArgs& a) {
   std::optional<Camera> requested;
   if (!a.camera.empty()) requested = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   const Camera camera = choose_camera(scene, requested);
+  // The table and the pictures are one set (a failed write leaves the previous run's whole);
+  // claimed before the renders, so that an unwritable --out-dir is said at once.
+  StagedOutputs staged(a.out_dir, "rsaa diagnose");
   gl::HeadlessContext context;
   const GpuScene gpu_scene(scene);
   const View view = make_view(camera, a.width, a.height);
@@ -140,8 +144,7 @@ int run_diagnose(const DiagnoseArgs& a) {
     legend += entry;
   }
 
-  std::filesystem::create_directories(a.out_dir);
-  const std::filesystem::path dir(a.out_dir);
+  const std::filesystem::path dir(staged.dir());
   write_image((dir / "error_map.png").string(), from_display(diagnosis_picture(d), a.width, a.height));
   write_image((dir / "oracle.png").string(), d.oracle);
   write_image((dir / "coverage.png").string(), d.coverage);
@@ -149,8 +152,10 @@ int run_diagnose(const DiagnoseArgs& a) {
   write_image((dir / "noaa.png").string(), in.noaa);
   write_image((dir / "reference.png").string(), in.reference);
   write_file_atomically((dir / "diagnosis.md").string(), markdown + legend + "\n");
-  std::printf("%s%s\nwrote %s/{diagnosis.md,error_map.png,oracle.png,coverage.png,rsaa.png,noaa.png,reference.png}\n",
-              markdown.c_str(), legend.c_str(), a.out_dir.c_str());
+  const std::vector<std::string> written = staged.commit();
+  std::printf("%s%s\n", markdown.c_str(), legend.c_str());
+  std::fflush(stdout);
+  print_written(a.out_dir, written);
   return 0;
 }
 

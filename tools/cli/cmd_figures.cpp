@@ -51,12 +51,13 @@ int run_figures(FiguresArgs a) {
     const bench::Figure f = bench::make_figure(name, o, [](const std::string& what) {
       std::fprintf(stderr, "  %s\n", what.c_str());
     });
-    // Each figure's CSV, PNG and Markdown files as one set.
     bench::write_figure(f, staged.dir());
-    print_written(a.out_dir, staged.commit());
     std::printf("## %s\n\n%s\n", name.c_str(), f.markdown.c_str());
     std::fflush(stdout);
   }
+  // Every figure of the run as one set: a run that fails on a later figure (a scene that does not
+  // load, a full disk) leaves the previous run's files, never this run's first figures beside them.
+  print_written(a.out_dir, staged.commit());
   return 0;
 }
 

@@ -293,6 +293,13 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
                "ulimit -u", f("nproc.png"), {}};
   nproc_3.max_processes = 3;
 
+  // An address-space limit too small for llvmpipe's context: it crashed inside the driver
+  // (SIGSEGV, 300-500 MB) or failed without naming the limit.
+  Feed small_address_space{"render with RLIMIT_AS 400 MiB (llvmpipe crashed creating its context)",
+                           {"render", "--scene", "builtin:edges", "--width", "32", "--height", "24", "--out", f("as.png")},
+                           "ulimit -v", f("as.png"), {}};
+  small_address_space.address_space = std::uint64_t{400} << 20;
+
   // LP_NUM_THREADS beyond the process limit: llvmpipe waited forever for its missing threads.
   Feed lp_threads{"LP_NUM_THREADS=32 with RLIMIT_NPROC 8 (llvmpipe waited forever)",
                   {"render", "--scene", "builtin:edges", "--technique", "rsaa", "--width", "32", "--height", "24", "--out", f("threads/lp.png")},
@@ -334,7 +341,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
       options));
 
   suites.push_back(run_class(
-      "hostile 2, hangs: devices and FIFOs where files are read, a cut PLY header, LP_NUM_THREADS beyond the process limit",
+      "hostile 2, hangs and driver crashes: devices and FIFOs where files are read, a cut PLY header, LP_NUM_THREADS beyond the process limit, an address space too small for llvmpipe",
       {
           refuse("compare /dev/zero", {"compare", "/dev/zero", f("black.png")}, "/dev/zero"),
           refuse("compare a FIFO", {"compare", f("black.png"), f("fifo.png")}, "fifo.png"),
@@ -347,6 +354,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("a model whose material file is a FIFO", {"render", "--scene", f("fifo-mtl.obj"), "--out", f("out-4.png")}, "fifo-mtl.mtl", f("out-4.png")),
           refuse("plot a FIFO", {"plot", f("fifo.csv"), "--x", "a", "--y", "b", "--out", f("out-5.png")}, "fifo.csv", f("out-5.png")),
           lp_threads,
+          small_address_space,
           refuse("PLY header cut inside a property list (assimp looped forever)", {"render", "--scene", f("cut.ply"), "--out", f("out-cut.png")}, "end_header", f("out-cut.png")),
           refuse("train --generic a FIFO", {"train", "--from-scene", "builtin:edges", "--generic", f("fifo.json"), "--out-dir", f("tables-fifo")}, "fifo.json"),
       },
