@@ -40,9 +40,16 @@ Camera orbit_camera(const Camera& c, double degrees) {
 
 Camera parse_camera(const std::string& text, const glm::vec3& lo, const glm::vec3& hi) {
   std::vector<float> v;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
+  // Every item between commas, an empty last one included (a trailing comma was taken as nothing).
+  std::vector<std::string> items(1);
+  for (char c : text) {
+    if (c == ',') items.emplace_back();
+    else items.back().push_back(c);
+  }
+  for (const std::string& item : items) {
+    // Decimal numbers only (stof also reads hexadecimal, "inf" and "nan").
+    if (item.find_first_not_of(" 0123456789.eE+-") != std::string::npos || item.find_first_of("0123456789") == std::string::npos)
+      throw std::invalid_argument("--camera: '" + item + "' is not a number");
     std::size_t used = 0;
     float x;
     try {

@@ -173,6 +173,35 @@ TEST(Cli, ShadersRecordACommandThatMakesThemAgain) {
     EXPECT_EQ(test::read_text(first + "/" + file), test::read_text(again + "/" + file)) << file;
 }
 
+// An option given is never dropped without a word: an empty value, a measuring option beside
+// --from-json (the file's run is redrawn as it was), --growth with --from-json, and --quick's
+// sizes where the user gave their own.
+TEST(Cli, GivenBenchAndFiguresOptionsAreNeverIgnored) {
+  TempDir dir;
+  struct Refused {
+    std::string args, message;
+  };
+  for (const Refused& bad : std::vector<Refused>{
+           {"bench --techniques ''", "--techniques: an empty value names nothing"},
+           {"bench --lights ''", "--lights: an empty value names nothing"},
+           {"figures --scenes ''", "--scenes: an empty value names nothing"},
+           {"bench --from-json " + dir.file("b.json") + " --width 100", "--width belongs to a measurement"},
+           {"bench --from-json " + dir.file("b.json") + " --scenes builtin:edges", "--scenes belongs to a measurement"},
+           {"bench --growth --from-json " + dir.file("b.json"), "--growth belongs to a measurement"},
+       }) {
+    const auto r = run_rsaa(bad.args + " --out-dir " + dir.file("out"));
+    EXPECT_NE(r.exit_code, 0) << bad.args;
+    EXPECT_NE(r.output.find(bad.message), std::string::npos) << bad.args << "\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out"))) << bad.args;
+  }
+  const auto keys = run_rsaa("view --keys ''");
+  EXPECT_NE(keys.exit_code, 0);
+  EXPECT_NE(keys.output.find("--keys: an empty value names nothing"), std::string::npos) << keys.output;
+  const auto r = run_rsaa("figures --quick --figure memory --width 40 --height 30 --out-dir " + dir.file("figures"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("at 40x30"), std::string::npos) << "--quick kept the given size:\n" << r.output;
+}
+
 // A bench report is a set (JSON, CSV, Markdown, plots): a run that fails while writing it leaves
 // the directory's previous report as it was, never new files beside old ones.
 TEST(Cli, ABenchReportIsWrittenWholeOrNotAtAll) {

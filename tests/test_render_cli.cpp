@@ -69,6 +69,15 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
            {"--technique dyncov --rules evict", "--rules must be seed or surface"},
            {"--technique rsaa --code-bits 12", "--code-bits"},
            {"--technique rsaa --material-edges yes", "--material-edges must be off or on, not 'yes'"},
+           // Given, never ignored: an option of another technique, an empty value, a camera with a
+           // trailing comma or in hexadecimal (each once taken without a word).
+           {"--technique noaa --similarity bogus", "--similarity is an option of rsaa, not of noaa"},
+           {"--technique msaa --z-prepass", "--z-prepass is an option of dcaa and dyncov, not of msaa"},
+           {"--technique fxaa --kernel 2", "--kernel is an option of ssaa-filtered"},
+           {"--technique rsaa --table ''", "--table: an empty value names nothing"},
+           {"--camera ''", "--camera: an empty value names nothing"},
+           {"--camera 1,2,3,0,0,0,", "--camera: '' is not a number"},
+           {"--camera 0x10,2,3,0,0,0", "'0x10' is not a number"},
        }) {
     const std::string size = bad.args.find("--width") == std::string::npos ? "--width 32 --height 24 " : "";
     const auto r = run_rsaa("render " + size + bad.args + " --out " + out);

@@ -103,7 +103,9 @@ int run_growth_command(const BenchArgs& a) {
     o.sizes = {{160, 120}, {320, 240}};
     o.subdivision_levels = {0, 1};
     o.light_counts = {1, 4};
-    o.width = 160, o.height = 120, o.frames = 2;
+    // Given sizes and frames keep their value, as in the bench's --quick.
+    o.width = a.width_given ? a.width : 160, o.height = a.height_given ? a.height : 120;
+    o.frames = a.frames_given ? a.frames : 2;
   } else {
     o.light_counts = {1, 2, 4, 8, 16, 32};
     o.width = a.width, o.height = a.height, o.frames = a.frames;
@@ -248,6 +250,13 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--from-json", args->from_json,
                   "Report and plot a previous run's bench.json again instead of measuring");
   return [args, cmd] {
+    // A redraw takes everything from the file: a measuring option beside it would be ignored.
+    if (!args->from_json.empty())
+      for (const char* option : {"--growth", "--quick", "--scenes", "--techniques", "--table", "--table-prepass",
+                                 "--width", "--height", "--frames", "--orbit-frames", "--lights"})
+        if (cmd->count(option) > 0)
+          throw std::invalid_argument(std::string("--from-json redraws a measured run as it was: ") + option +
+                                      " belongs to a measurement; leave it out");
     args->width_given = cmd->count("--width") > 0, args->height_given = cmd->count("--height") > 0;
     args->frames_given = cmd->count("--frames") > 0, args->orbit_frames_given = cmd->count("--orbit-frames") > 0;
     args->scenes_given = cmd->count("--scenes") > 0;

@@ -24,12 +24,19 @@ struct FiguresArgs {
   double pull_back = 16.0;
   bool quick = false;
   std::string out_dir = "out/papers";
+  // Which of the options --quick sets were given: those keep their value.
+  bool width_given = false, height_given = false, frames_given = false;
 };
 
 int run_figures(FiguresArgs a) {
   bench::FigureOptions o;
   o.scenes = {"builtin:default", kEngine};
-  if (a.quick) o.scenes = {"builtin:default"}, a.width = 160, a.height = 120, a.frames = 4;
+  if (a.quick) {
+    o.scenes = {"builtin:default"};
+    if (!a.width_given) a.width = 160;
+    if (!a.height_given) a.height = 120;
+    if (!a.frames_given) a.frames = 4;
+  }
   if (!a.scenes.empty()) {
     o.scenes.clear();
     std::stringstream list(a.scenes);
@@ -84,7 +91,11 @@ Action add_figures_command(CLI::App& app) {
       ->check(finite_range(1.0, 1000.0));
   cmd->add_flag("--quick", args->quick, "CI scale: builtin:default at 160x120, 4 frames");
   cmd->add_option("--out-dir", args->out_dir, "Where the CSV, PNG and Markdown files go")->capture_default_str();
-  return [args] { return run_figures(*args); };
+  return [args, cmd] {
+    args->width_given = cmd->count("--width") > 0, args->height_given = cmd->count("--height") > 0;
+    args->frames_given = cmd->count("--frames") > 0;
+    return run_figures(*args);
+  };
 }
 
 }  // namespace rsaa::cli

@@ -63,7 +63,11 @@ Action add_render_command(CLI::App& app) {
                   "scene's view, or framing the model's bounds)");
   cmd->add_option("--scene-scale", args->scene_scale, "Multiply the scene's positions and camera by this (units test)");
   cmd->add_option("--out", args->out, "Output image (PNG: 8-bit sRGB; EXR: linear)")->required();
-  return [args] { return run_render(*args); };
+  return [args, cmd] {
+    validate(args->technique);
+    refuse_options_of_other_techniques(*cmd, args->technique.technique);
+    return run_render(*args);
+  };
 }
 
 }  // namespace rsaa::cli

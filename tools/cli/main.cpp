@@ -83,6 +83,18 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   const CLI::App* chosen = app.get_subcommands().front();
+  // An empty value names nothing; taken as "the default" it hid typos such as --techniques ''
+  // (every technique ran) or --keys '' (view waited for keys that never came).
+  for (const CLI::Option* option : chosen->get_options()) {
+    if (option->count() == 0 || option->get_items_expected_min() == 0) continue;  // flags take no value
+    for (const std::string& value : option->results())
+      if (value.empty()) {
+        std::fprintf(stderr, "rsaa %s: error: %s: an empty value names nothing%s\n", chosen->get_name().c_str(),
+                     option->get_name().c_str(),
+                     option->get_required() ? "" : "; leave the option out for its default");
+        return 2;
+      }
+  }
   try {
     return actions.at(chosen)();
   } catch (const std::bad_alloc&) {

@@ -1,6 +1,11 @@
 // The technique options shared by the commands that render (render, view, bench).
 #pragma once
 
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
 #include "runtime/technique_registry.h"
@@ -100,6 +105,28 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "dyncov: surface (merge fragments of one surface, per-sample visibility) | seed (the seed's "
                   "rules as written); dcaa: surface | paper (Algorithm 1 as written)")
       ->capture_default_str();
+}
+
+// Options that only some techniques read, given with another technique, are refused: they would
+// change nothing without a word (render --technique noaa --similarity bogus exited 0). (Not for
+// `view`, whose keys switch techniques.)
+inline void refuse_options_of_other_techniques(const CLI::App& cmd, const std::string& technique) {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> readers = {
+      {"--similarity", {"rsaa"}},      {"--auth", {"rsaa"}},         {"--threshold", {"rsaa"}},
+      {"--prepass", {"rsaa"}},         {"--prepass-cull", {"rsaa"}}, {"--split-cap", {"rsaa"}},
+      {"--multi-surface", {"rsaa"}},   {"--split-check", {"rsaa"}},  {"--fetch-check", {"rsaa"}},
+      {"--material-edges", {"rsaa"}},  {"--post", {"rsaa"}},         {"--code-bits", {"rsaa"}},
+      {"--kernel", {"ssaa-filtered"}}, {"--agaa-k", {"agaa"}},       {"--agaa-diffuse", {"agaa"}},
+      {"--agaa-aggregates", {"agaa"}}, {"--agaa-k-pixels", {"agaa"}}, {"--z-prepass", {"dcaa", "dyncov"}},
+      {"--shade", {"dcaa", "dyncov"}}, {"--rules", {"dcaa", "dyncov"}}};
+  for (const auto& [option, techniques] : readers) {
+    if (cmd.count(option) == 0 || std::find(techniques.begin(), techniques.end(), technique) != techniques.end())
+      continue;
+    std::string by;
+    for (const std::string& t : techniques) by += (by.empty() ? "" : " and ") + t;
+    throw std::invalid_argument(option + " is an option of " + by + ", not of " + technique +
+                                " (which it would leave unchanged)");
+  }
 }
 
 }  // namespace rsaa::cli
