@@ -226,6 +226,34 @@ TEST(Cli, ABenchReportIsWrittenWholeOrNotAtAll) {
     const std::string name = entry.path().filename().string();
     EXPECT_TRUE(name == "report.md" || name == "pareto-edges.png" || name == "passes-edges.png") << "left behind: " << name;
   }
+  // A new report replaces the previous one whole: redrawn over the measured run with another
+  // scene, the measured run's crops and plots go, its data is the redrawn run's, and a file the
+  // reports never wrote stays.
+  nlohmann::json moved = nlohmann::json::parse(test::read_text(first + "/bench.json"));
+  for (auto& row : moved["results"]) row["scene"] = "builtin:star";
+  test::write_text(dir.file("moved.json"), moved.dump());
+  test::write_text(first + "/notes.txt", "mine");
+  r = run_rsaa("bench --from-json " + dir.file("moved.json") + " --out-dir " + first);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* gone : {"crops-edges.png", "pareto-edges.png", "passes-edges.png"})
+    EXPECT_FALSE(std::filesystem::exists(first + "/" + gone)) << gone;
+  for (const char* kept : {"pareto-star.png", "passes-star.png", "report.md", "bench.csv", "notes.txt"})
+    EXPECT_TRUE(std::filesystem::exists(first + "/" + kept)) << kept;
+  EXPECT_EQ(nlohmann::json::parse(test::read_text(first + "/bench.json"))["results"][0]["scene"], "builtin:star");
+}
+
+// `rsaa shaders` into a directory holds one configuration's files: the record passes of an earlier
+// --prepass msaa run go when a configuration without them is written there.
+TEST(Cli, ShadersLeaveNoFilesOfAnEarlierConfiguration) {
+  TempDir dir;
+  auto r = run_rsaa("shaders --pattern gl4x --prepass msaa --out-dir " + dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(std::filesystem::exists(dir.file("rsaa_prepass_codes.comp")));
+  r = run_rsaa("shaders --pattern d3d8x --out-dir " + dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* gone : {"rsaa_prepass_list.comp", "rsaa_prepass_codes.comp", "rsaa_post_list_size.comp"})
+    EXPECT_FALSE(std::filesystem::exists(dir.file(gone))) << gone;
+  EXPECT_TRUE(std::filesystem::exists(dir.file("rsaa_post.frag")));
 }
 
 // The pre-pass text of `rsaa shaders` is the pass's own: an engine may draw an RsaaPass of the

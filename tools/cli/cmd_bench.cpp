@@ -129,7 +129,7 @@ int run_growth_command(const BenchArgs& a) {
   bench::plot_growth(results, bench::GrowthAxis::Lights, dir + "/growth-lights.png");
   const std::string report = bench::growth_markdown(o, results);
   write_file_atomically(dir + "/growth.md", report);
-  print_written(a.out_dir, staged.commit());
+  print_written(a.out_dir, staged.commit("growth"));
   std::printf("%s", report.c_str());
   return 0;
 }
@@ -175,6 +175,9 @@ int run_bench_command(BenchArgs a) {
   std::vector<bench::TechniqueResult> results;
   if (!a.from_json.empty()) {
     results = bench::read_results_json(a.from_json, o);
+    // The redrawn report's own data beside it, as a measured run leaves it.
+    write_file_atomically(dir + "/bench.json", bench::results_json(o, results));
+    write_file_atomically(dir + "/bench.csv", bench::results_csv(results));
   } else {
     gl::HeadlessContext context;
     o.crops_dir = dir;
@@ -194,7 +197,7 @@ int run_bench_command(BenchArgs a) {
   }
   const std::string report = bench::results_markdown(o, results);
   write_file_atomically(dir + "/report.md", report);
-  print_written(a.out_dir, staged.commit());
+  print_written(a.out_dir, staged.commit("bench"));
   std::printf("%s", report.c_str());
   if (a.target_psnr > 0) {
     std::printf("\ncheapest technique reaching %.1f dB:\n", a.target_psnr);

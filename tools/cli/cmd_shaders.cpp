@@ -3,6 +3,7 @@
 // without an include mechanism (SMAA-style: generate once, copy into the engine).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,10 @@
 
 namespace rsaa::cli {
 namespace {
+
+// The multisample pre-pass's record passes, written with --prepass msaa only.
+constexpr const char* kRecordPassFiles[] = {"rsaa_prepass_list.comp", "rsaa_prepass_codes.comp",
+                                            "rsaa_post_list_size.comp"};
 
 struct ShadersArgs {
   std::string out_dir, pattern = "d3d8x", table, material_edges = "off";
@@ -138,7 +143,7 @@ int run_shaders(ShadersArgs a) {
         "// (location 0) to (0, height); dispatch rsaa_prepass_list.comp over the image in its work\n"
         "// groups, then rsaa_post_list_size.comp (1 group), then rsaa_prepass_codes.comp indirectly\n"
         "// from the buffer's first 12 bytes, with memory barriers between (RsaaPass::codes_from_records).\n";
-    for (const char* name : {"rsaa_prepass_list.comp", "rsaa_prepass_codes.comp", "rsaa_post_list_size.comp"})
+    for (const char* name : kRecordPassFiles)
       files.push_back({a.out_dir + "/" + name, "#version 450 core\n" + header + usage + defines + record_defines +
                                                    rsaa_shader_file(name)});
   }
@@ -165,6 +170,15 @@ int run_shaders(ShadersArgs a) {
   const auto lock = claim_out_dir(a.out_dir, "rsaa shaders");
   write_files_atomically(files);
   for (const auto& [path, text] : files) std::printf("wrote %s\n", path.c_str());
+  // The directory holds one configuration's files: the record passes an earlier --prepass msaa
+  // run wrote there would be taken as this one's.
+  if (!multisample)
+    for (const char* name : kRecordPassFiles) {
+      std::error_code error;
+      const std::string stale = a.out_dir + "/" + name;
+      if (std::filesystem::is_regular_file(stale, error) && std::filesystem::remove(stale, error))
+        std::printf("removed %s (an earlier configuration's record pass)\n", stale.c_str());
+    }
   return 0;
 }
 

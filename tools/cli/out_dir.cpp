@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +14,7 @@ namespace rsaa::cli {
 namespace {
 
 constexpr const char* kStagingPrefix = ".rsaa-staging-";
+constexpr const char* kSetListPrefix = ".rsaa-set-";
 
 }  // namespace
 
@@ -45,7 +47,7 @@ StagedOutputs::~StagedOutputs() {
 
 std::string StagedOutputs::dir() const { return staging_.string(); }
 
-std::vector<std::string> StagedOutputs::commit() {
+std::vector<std::string> StagedOutputs::commit(const std::string& set_name) {
   std::vector<std::pair<std::string, std::string>> files;
   std::vector<std::string> names;
   for (const auto& entry : std::filesystem::directory_iterator(staging_)) {
@@ -55,10 +57,30 @@ std::vector<std::string> StagedOutputs::commit() {
     files.emplace_back((out_dir_ / name).string(), read_whole_file(entry.path().string(), kMaxStagedFileBytes));
     names.push_back(name);
   }
+  std::sort(names.begin(), names.end());
+  std::vector<std::string> previous;
+  if (!set_name.empty()) {
+    const std::filesystem::path list = out_dir_ / (kSetListPrefix + set_name);
+    std::error_code error;
+    if (std::filesystem::is_regular_file(list, error)) {
+      std::istringstream lines(read_whole_file(list.string(), kMaxStagedFileBytes));
+      // Plain names of this directory only: a hand-edited list names nothing elsewhere.
+      for (std::string name; std::getline(lines, name);)
+        if (!name.empty() && name[0] != '.' && name.find('/') == std::string::npos) previous.push_back(name);
+    }
+    std::string text;
+    for (const std::string& name : names) text += name + "\n";
+    files.emplace_back(list.string(), text);  // committed with the set
+  }
   write_files_atomically(files);
   // Committed: the staging directory is empty again for the next set.
   for (const std::string& name : names) std::filesystem::remove(staging_ / name);
-  std::sort(names.begin(), names.end());
+  for (const std::string& name : previous) {
+    std::error_code error;
+    const std::filesystem::path stale = out_dir_ / name;
+    if (!std::binary_search(names.begin(), names.end(), name) && std::filesystem::is_regular_file(stale, error))
+      std::filesystem::remove(stale, error);
+  }
   return names;
 }
 

@@ -31,8 +31,11 @@ class StagedOutputs {
   // Where the command writes its files (a directory inside the output directory).
   std::string dir() const;
   // Every file written into dir() since the last commit, into the output directory as one set;
-  // returns their names.
-  std::vector<std::string> commit();
+  // returns their names. With `set_name`, the set replaces the previous one of that name whole:
+  // a hidden list (.rsaa-set-NAME) names the files each commit wrote, and those of the previous
+  // set that this one does not write are removed (a report of other scenes left their plots, a
+  // redraw left a measured run's crops, beside it). Files the list does not name are kept.
+  std::vector<std::string> commit(const std::string& set_name = "");
 
   static constexpr std::uint64_t kMaxStagedFileBytes = std::uint64_t{1} << 30;
 
