@@ -155,8 +155,8 @@ struct RsaaSettings {
   int auth = 1;
   float threshold = 0.4f;         // SADP units (sadp, sadp-plane), or percent of depth (depth)
   int code_bits = 8;              // 8 | 16 | 32: storage per subsample similarity
-  // Ours, beyond the paper, the defaults since they won on every bench scene (README "RSAA on
-  // pixels where 3+ surfaces meet"); 0 / "fetch" keep the paper's algorithm exactly:
+  // Ours, beyond the paper, the defaults since they won on every bench scene (README "Pixels of
+  // three or more surfaces"); 0 / "fetch" keep the paper's algorithm exactly:
   // split_cap > 0 (>= 1): the k-means split (maxsim / 2 + threshold / 2) is capped at split_cap x
   // threshold, so a subsample that clearly differs from the centre's surface counts as dissimilar
   // even when a third, far more different surface (often the background) is in the pixel.
@@ -198,7 +198,7 @@ struct RsaaSettings {
   // (a union pattern, such as tables/custom-gl4x-union.json), draws twice into m-sample targets,
   // the second shifted; refused where the driver can do neither. Its masks equal the jittered
   // pre-pass's (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's
-  // outermost pixels) at a third of its cost for 4 subsamples on llvmpipe (README, *The
+  // outermost pixels) at about half its cost for 4 subsamples on llvmpipe (README, *The
   // multisample pre-pass*). "records": the jittered draws, each writing the surface records (into
   // its own layers of array textures) instead of codes, and the same compute passes after: any
   // pattern, the same masks as "jittered" up to float ties (the records round the face normal to
@@ -219,7 +219,8 @@ struct RsaaSettings {
   // driver's in the fragment paths and the shader's in the compute one): "compute"
   // (default) copies the colour image, lists the pixels whose mask is not all-similar with a
   // compute shader, then resolves the listed pixels only (a second, indirect dispatch; it binds
-  // shader storage buffer 0 and image units 0 and 1 meanwhile, restored after); "edges" copies,
+  // shader storage buffer 0 and image units 0 and 1, the listing pass also the codes and the centre
+  // normal as images from unit 2, meanwhile, restored after); "edges" copies,
   // then an edge pass marks those pixels in a depth target and the resolve runs behind an early
   // depth test (a driver that executes both sides of a branch for a whole SIMD batch, as Mesa
   // llvmpipe, pays for every batch that holds an edge pixel; the list pays per edge pixel);

@@ -176,6 +176,7 @@ for scene in builtin:default "$engine" "$truck"; do
 done
 cp "$out/compare/default/rsaax8.png" docs/images/default_rsaa.png
 bash tools/crops.sh "$out/compare/default" 100x75+250+40 docs/images/default_crops_star.png
+bash tools/crops.sh "$out/compare/default" 100x75+331+172 docs/images/default_crops_box.png
 diagnosis_steps
 step "bench, RSAA against its baselines" bench-rsaa.md
 $rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \

@@ -163,8 +163,8 @@ trainer, their tests and the table fuzz loop with AddressSanitizer and Undefined
   --height 8192\` with rsaa or ssaa-filtered, \`bench --quick\`); techniques whose buffers do not
   fit at 8192x8192 under 6 GiB (dcaa, dyncov, ssaa 64, agaa 16) are refused with GL's
   out-of-memory error (0x0505) naming the pass.
-- \`rsaa bench\` measures renders in memory: a technique that rendered NaN would show PSNR
-  and SSIM as nan in its report (undefined, not refused).
+- \`rsaa bench\` measures renders in memory: a technique whose image holds NaN or infinite
+  pixels stops the bench with an error naming it and the scene (never scored).
 MD
 } >docs/reliability.md.tmp
 mv docs/reliability.md.tmp docs/reliability.md

@@ -186,6 +186,10 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
       r.bytes_per_pixel = t->bytes_per_pixel();
 
       std::vector<DisplayImage> frames = {to_display(read_back_image(output.get(), o.width, o.height))};
+      // A technique that renders NaN or infinity is broken, not measurable: said, never scored.
+      if (frames[0].non_finite_pixels > 0)
+        throw std::runtime_error(r.label + " on " + scene.name + ": " + std::to_string(frames[0].non_finite_pixels) +
+                                 " pixels of its image are not finite (NaN or infinite)");
       const ImageComparison c = compare_images(frames[0], reference[0]);
       r.psnr_db = capped(c.psnr_db);
       r.ssim = c.ssim;
