@@ -418,7 +418,11 @@ Scene with_textures(ImportedModel model) {
       if (source.embedded) {
         decoded = decode_image("embedded." + source.format_hint, source.bytes, kTextureBudget);
       } else {
-        if (!std::filesystem::exists(source.name, ec)) continue;
+        if (!std::filesystem::exists(source.name, ec)) {
+          std::fprintf(stderr, "rsaa: warning: %s: texture '%s' not found; drawn in its material's colour\n",
+                       what.c_str(), source.name.c_str());
+          continue;
+        }
         decoded = decode_image(source.name, read_whole_file(source.name, kTextureBudget.file_bytes, "texture"),
                                kTextureBudget);
       }
@@ -430,7 +434,9 @@ Scene with_textures(ImportedModel model) {
       texture_of_material[m] = int(scene.textures.size()) - 1;
     } catch (const LimitError& e) {
       throw std::runtime_error(what + ": " + e.what());
-    } catch (const std::runtime_error&) {
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "rsaa: warning: %s: texture not used (%s); drawn in its material's colour\n", what.c_str(),
+                   e.what());
     }
   }
   for (DrawRange& draw : scene.draws)

@@ -93,6 +93,23 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 2);  // inputs only
 }
 
+// A texture that is missing or cannot be decoded leaves the material's colour (the geometry is
+// still worth drawing), and says so: it used to be dropped without a word.
+TEST(RenderCli, AModelsMissingOrBrokenTextureIsSaid) {
+  TempDir dir;
+  test::write_text(dir.file("m.obj"), "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n");
+  test::write_text(dir.file("m.mtl"), "newmtl a\nKd 1 0 0\nmap_Kd t.png\n");
+  auto r = run_rsaa("render --scene " + dir.file("m.obj") + " --width 32 --height 24 --out " + dir.file("a.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: model '" + dir.file("m.obj") + "': texture '" + dir.file("t.png") + "' not found"),
+            std::string::npos)
+      << r.output;
+  test::write_text(dir.file("t.png"), "not a PNG");
+  r = run_rsaa("render --scene " + dir.file("m.obj") + " --width 32 --height 24 --out " + dir.file("b.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("texture not used (" + dir.file("t.png")), std::string::npos) << r.output;
+}
+
 TEST(CompareCli, RejectsMissingAndMismatchedImages) {
   TempDir dir;
   ASSERT_EQ(run_rsaa("render --width 16 --height 16 --out " + dir.file("a.png")).exit_code, 0);
