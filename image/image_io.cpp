@@ -143,6 +143,8 @@ const OiioCodec& codec() {
 
 }  // namespace
 
+void require_image_module() { codec(); }
+
 DecodedImage decode_image(const std::string& name, const std::string& bytes, const ImageBudget& budget) {
   return codec().decode(name, bytes, budget);
 }

@@ -44,6 +44,11 @@ DecodedImage decode_image(const std::string& name, const std::string& bytes, con
 // Reads `path` under the budget's file checks, then decodes it.
 DecodedImage read_decoded_image(const std::string& path, const ImageBudget& budget = kImageBudget);
 
+// Loads the image module (OpenImageIO) now instead of on first use: a command that will write
+// images says at once, before its renders, when it cannot (under a process or address-space limit
+// the load failed only after minutes of work). Throws std::runtime_error saying why.
+void require_image_module();
+
 // Writes atomically (temporary file in the same directory, then rename). The format follows the
 // extension. Non-finite values are written as 0. Throws std::runtime_error naming the path.
 void write_image(const std::string& path, const Image& image);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -47,20 +48,18 @@ Camera parse_camera(const std::string& text, const glm::vec3& lo, const glm::vec
     else items.back().push_back(c);
   }
   for (const std::string& item : items) {
-    // Decimal numbers only (stof also reads hexadecimal, "inf" and "nan").
-    if (item.find_first_not_of(" 0123456789.eE+-") != std::string::npos || item.find_first_of("0123456789") == std::string::npos)
+    // Decimal numbers only, blanks around them (strtod also reads hexadecimal, "inf" and "nan").
+    if (item.find_first_not_of(" \t0123456789.eE+-") != std::string::npos ||
+        item.find_first_of("0123456789") == std::string::npos)
       throw std::invalid_argument("--camera: '" + item + "' is not a number");
-    std::size_t used = 0;
-    float x;
-    try {
-      x = std::stof(item, &used);
-    } catch (const std::exception&) {
+    char* end = nullptr;
+    // In double, then to float: a value too small for a float (1e-40) is 0 or subnormal, not an
+    // error (stof called it "not a number").
+    const double x = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || std::string(end).find_first_not_of(" \t") != std::string::npos)
       throw std::invalid_argument("--camera: '" + item + "' is not a number");
-    }
-    if (used != item.size() && item.find_first_not_of(" ", used) != std::string::npos)
-      throw std::invalid_argument("--camera: '" + item + "' is not a number");
-    if (!std::isfinite(x)) throw std::invalid_argument("--camera: values must be finite");
-    v.push_back(x);
+    if (!std::isfinite(x) || std::abs(x) > 3.0e38) throw std::invalid_argument("--camera: values must be finite");
+    v.push_back(float(x));
   }
   if (v.size() != 6 && v.size() != 7)
     throw std::invalid_argument("--camera: expected ex,ey,ez,tx,ty,tz[,fov], got " +

@@ -385,7 +385,12 @@ Scene scaled_scene(Scene scene, float factor) {
 
 std::string scene_short_name(const std::string& spec) {
   const std::string name = spec.substr(spec.find_last_of("/:") + 1);
-  return name.substr(0, name.find('.'));
+  std::string short_name = name.substr(0, name.find('.'));
+  // A part of file names (pareto-NAME.png) and of reports' lines: no control characters (a
+  // newline in a model's path made two lines of one name).
+  for (char& c : short_name)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '_';
+  return short_name;
 }
 
 Camera choose_camera(const Scene& scene, const std::optional<Camera>& requested) {

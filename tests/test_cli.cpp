@@ -240,6 +240,22 @@ TEST(Cli, ABenchReportIsWrittenWholeOrNotAtAll) {
   for (const char* kept : {"pareto-star.png", "passes-star.png", "report.md", "bench.csv", "notes.txt"})
     EXPECT_TRUE(std::filesystem::exists(first + "/" + kept)) << kept;
   EXPECT_EQ(nlohmann::json::parse(test::read_text(first + "/bench.json"))["results"][0]["scene"], "builtin:star");
+  // A redraw of the same scenes in place keeps their crops, which it cannot make again.
+  test::write_text(first + "/crops-star.png", "measured crops");
+  r = run_rsaa("bench --from-json " + first + "/bench.json --out-dir " + first);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(test::read_text(first + "/crops-star.png"), "measured crops");
+  // A scene name with a control character (a newline in a model's path, or a hand-edited file)
+  // names no other file: the set list holds one name a line.
+  test::write_text(first + "/photo.png", "precious");
+  for (auto& row : moved["results"]) row["scene"] = "builtin:x\nphoto";
+  test::write_text(dir.file("newline.json"), moved.dump());
+  r = run_rsaa("bench --from-json " + dir.file("newline.json") + " --out-dir " + first);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(first + "/pareto-x_photo.png"));
+  r = run_rsaa("bench --from-json " + first + "/bench.json --out-dir " + first);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(test::read_text(first + "/photo.png"), "precious");
 }
 
 // `rsaa shaders` into a directory holds one configuration's files: the record passes of an earlier

@@ -78,6 +78,7 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
            {"--camera ''", "--camera: an empty value names nothing"},
            {"--camera 1,2,3,0,0,0,", "--camera: '' is not a number"},
            {"--camera 0x10,2,3,0,0,0", "'0x10' is not a number"},
+           {"--technique rsaa --z-prepass", "--z-prepass is an option of dcaa and dyncov, not of rsaa"},
        }) {
     const std::string size = bad.args.find("--width") == std::string::npos ? "--width 32 --height 24 " : "";
     const auto r = run_rsaa("render " + size + bad.args + " --out " + out);

@@ -70,14 +70,14 @@ AxisRange drawable_range(double lo, double hi, double fraction, const std::strin
   if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) return {};
   const double magnitude = std::max({1.0, std::abs(lo), std::abs(hi)});
   const double span = hi - lo;
-  // Spans below a millionth of the magnitude are drawn as one value: ticks a fifth of the span
-  // apart must still be distinct doubles.
-  const double pad = span > 1e-6 * magnitude ? fraction * span : std::max(fraction, 0.05) * magnitude;
+  // Spans below 1e-12 of the magnitude (a few thousand float steps of a double) are drawn as one
+  // value: ticks a fifth of the span apart must still be distinct doubles.
+  const double pad = span > 1e-12 * magnitude ? fraction * span : std::max(fraction, 0.05) * magnitude;
   const AxisRange r{lo - pad, hi + pad};
-  // (The grid divides the span by up to 4: it must stay finite times 4.)
-  if (!std::isfinite(r.lo) || !std::isfinite(r.hi) || !std::isfinite(4.0 * (r.hi - r.lo))) {
+  if (!std::isfinite(r.lo) || !std::isfinite(r.hi) || !std::isfinite(r.hi - r.lo)) {
     char values[128];
-    std::snprintf(values, sizeof values, "%s from %g to %g", what.c_str(), lo, hi);
+    if (lo == hi) std::snprintf(values, sizeof values, "%s is %g", what.c_str(), lo);
+    else std::snprintf(values, sizeof values, "%s from %g to %g", what.c_str(), lo, hi);
     throw std::runtime_error(std::string("the values span more than can be drawn (") + values + ")");
   }
   return r;

@@ -16,8 +16,8 @@ namespace rsaa::bench {
 void write_canvas(const cv::Mat& canvas, const std::string& path);
 
 // An axis's range [lo, hi] of the finite values it shows, widened on each side by `fraction` of
-// its span, or, for a single value (or a span too small for a double to step through at that
-// magnitude), by `fraction` of the value's magnitude (at least 1): every tick and point then has
+// its span, or, for a single value (or a span below 1e-12 of the values' magnitude), by
+// `fraction` of the value's magnitude (at least 1): every tick and point then has
 // a distinct, finite place (a constant column of 2e7 drew nothing, 1e308 and 1.7e308 overflowed
 // the grid to a crash). No finite value: [0, 1]. Throws std::runtime_error, naming `what` and
 // the values, when the widened range is beyond a double.

@@ -341,11 +341,18 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
   const auto px = [&](double x) { return left + int((x - x_lo) / (x_hi - x_lo) * (width - left - right)); };
   const auto py = [&](double y) { return height - bottom - int((y - y_lo) / (y_hi - y_lo) * (height - top - bottom)); };
   cv::rectangle(canvas, {left, top}, {width - right, height - bottom}, kInk);
+  // Enough significant digits that labels a quarter of the span apart differ (1e9 and 1e9 + 300
+  // were all "1e+09").
+  const auto digits = [](double lo, double hi) {
+    const double magnitude = std::max(std::abs(lo), std::abs(hi)), span = hi - lo;
+    return span > 0 && magnitude > 0 ? std::clamp(int(std::ceil(std::log10(magnitude / span))) + 2, 4, 17) : 4;
+  };
+  const int y_digits = digits(y_lo, y_hi), x_digits = digits(x_lo, x_hi);
   for (int t = 0; t <= 4; ++t) {
     const double y = y_lo + (y_hi - y_lo) * (t / 4.0);
     cv::line(canvas, {left, py(y)}, {width - right, py(y)}, kGrid);
     char label[32];
-    std::snprintf(label, sizeof label, "%.4g", y);
+    std::snprintf(label, sizeof label, "%.*g", y_digits, y);
     text(canvas, label, {5, py(y) + 5});
   }
   // One label per point while they fit (the trade curves), else 5 ticks: a label per row of a
@@ -358,7 +365,7 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
   }
   for (double x : x_labels) {
     char label[32];
-    std::snprintf(label, sizeof label, "%.4g", log_x ? std::pow(10.0, x) : x);
+    std::snprintf(label, sizeof label, "%.*g", log_x ? 4 : x_digits, log_x ? std::pow(10.0, x) : x);
     text(canvas, label, {px(x) - 15, height - bottom + 20});
   }
   text(canvas, title, {left, 30}, 0.55);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/util/atomic_file.h"
+#include "image/image_io.h"
 #include "runtime/gl_context.h"
 #include "runtime/scene.h"
 #include "tools/bench/bench.h"
@@ -118,6 +119,7 @@ int run_growth_command(const BenchArgs& a) {
   }
   StagedOutputs staged(a.out_dir, "rsaa bench");
   const std::string dir = staged.dir();
+  require_image_module();  // its images are written at the end: said now if they cannot be
   gl::HeadlessContext context;
   const auto results = bench::run_growth(o, [](const std::string& what, int done, int total) {
     std::fprintf(stderr, "[%3d/%3d] %s\n", done, total, what.c_str());
@@ -179,6 +181,7 @@ int run_bench_command(BenchArgs a) {
     write_file_atomically(dir + "/bench.json", bench::results_json(o, results));
     write_file_atomically(dir + "/bench.csv", bench::results_csv(results));
   } else {
+    require_image_module();  // its images are written at the end: said now if they cannot be
     gl::HeadlessContext context;
     o.crops_dir = dir;
     results = bench::run_bench(o, [](const std::string& what, int done, int total) {
@@ -191,6 +194,15 @@ int run_bench_command(BenchArgs a) {
   for (const auto& r : results)
     if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
   require_distinct_file_names(scenes, a.from_json.empty() ? "--scenes" : a.from_json);
+  // A redraw cannot make the crops again (they need the images): those of its scenes already in
+  // the directory stay in the set.
+  if (!a.from_json.empty())
+    for (const std::string& scene : scenes) {
+      const std::string crops = "crops-" + scene_short_name(scene) + ".png";
+      std::error_code error;
+      if (std::filesystem::is_regular_file(a.out_dir + "/" + crops, error))
+        std::filesystem::copy_file(a.out_dir + "/" + crops, dir + "/" + crops, error);
+    }
   for (const std::string& scene : scenes) {
     bench::plot_pareto(results, scene, dir + "/pareto-" + scene_short_name(scene) + ".png");
     bench::plot_pass_times(results, scene, dir + "/passes-" + scene_short_name(scene) + ".png");

@@ -91,6 +91,7 @@ int run_diagnose(const DiagnoseArgs& a) {
   // The table and the pictures are one set (a failed write leaves the previous run's whole);
   // claimed before the renders, so that an unwritable --out-dir is said at once.
   StagedOutputs staged(a.out_dir, "rsaa diagnose");
+  require_image_module();  // its images are written at the end: said now if they cannot be
   gl::HeadlessContext context;
   const GpuScene gpu_scene(scene);
   const View view = make_view(camera, a.width, a.height);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "image/image_io.h"
 #include "runtime/gl_context.h"
 #include "tools/bench/paper_figures.h"
 #include "tools/cli/commands.h"
@@ -53,6 +54,7 @@ int run_figures(FiguresArgs a) {
     throw std::invalid_argument("--figure: unknown figure '" + a.figure + "' (fig9, fig1, dcaa, agaa, memory or all)");
   // Claimed before the renders, so that an unwritable --out-dir is said at once.
   StagedOutputs staged(a.out_dir, "rsaa figures");
+  require_image_module();  // its images are written at the end: said now if they cannot be
   gl::HeadlessContext context;
   for (const std::string& name : names) {
     const bench::Figure f = bench::make_figure(name, o, [](const std::string& what) {

@@ -28,6 +28,7 @@ int run_render(const RenderArgs& a) {
   const Scene scene = scaled_scene(load_scene_within(a.scene, kSceneLoadSeconds), a.scene_scale);
   std::optional<Camera> camera;
   if (!a.camera.empty()) camera = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
+  require_image_module();  // its images are written at the end: said now if they cannot be
   gl::HeadlessContext context;
   const GpuScene gpu_scene(scene);
   RenderStats stats;

@@ -54,6 +54,9 @@ std::vector<std::string> StagedOutputs::commit(const std::string& set_name) {
     if (!entry.is_regular_file()) continue;
     const std::string name = entry.path().filename().string();
     if (name.rfind('.', 0) == 0) continue;  // a writer's own temporary
+    // The set list holds a name a line: a name with a control character could name another file.
+    if (std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+      throw std::runtime_error("--out-dir: a report file name holds a control character: '" + name + "'");
     files.emplace_back((out_dir_ / name).string(), read_whole_file(entry.path().string(), kMaxStagedFileBytes));
     names.push_back(name);
   }

@@ -122,6 +122,10 @@ inline void refuse_options_of_other_techniques(const CLI::App& cmd, const std::s
   for (const auto& [option, techniques] : readers) {
     if (cmd.count(option) == 0 || std::find(techniques.begin(), techniques.end(), technique) != techniques.end())
       continue;
+    // A flag given as false (--z-prepass=false) asks for nothing.
+    if (const CLI::Option* given = cmd.get_option_no_throw(option);
+        given && given->get_items_expected_max() == 0 && !given->as<bool>())
+      continue;
     std::string by;
     for (const std::string& t : techniques) by += (by.empty() ? "" : " and ") + t;
     throw std::invalid_argument(option + " is an option of " + by + ", not of " + technique +
