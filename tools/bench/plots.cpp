@@ -134,11 +134,15 @@ void plot_pareto(const std::vector<TechniqueResult>& results, const std::string&
     return left + int((std::log2(std::max(ratio, 1e-3)) - x_lo) / (x_hi - x_lo) * (width - left - right));
   };
   const auto py = [&](double db) { return height - bottom - int((db - y_lo) / (y_hi - y_lo) * (height - top - bottom)); };
-  for (int e = int(std::ceil(x_lo)); e <= int(std::floor(x_hi)); ++e) {
+  // At most about 12 powers of two labelled (ratios from 1e-6 to 1e6 wrote 40 labels over each other).
+  const int e_step = std::max(1, int(std::floor(x_hi) - std::ceil(x_lo)) / 12 + 1);
+  for (int e = int(std::ceil(x_lo)); e <= int(std::floor(x_hi)); e += e_step) {
     const double ratio = std::pow(2.0, e);
     cv::line(canvas, {px(ratio), top}, {px(ratio), height - bottom}, kGrid);
     char label[32];
-    std::snprintf(label, sizeof label, "%gx", ratio);
+    // Far from 1, a power of two: 0.000976562x and 1.04858e+06x were too wide to stand apart.
+    if (e >= -3 && e <= 12) std::snprintf(label, sizeof label, "%gx", ratio);
+    else std::snprintf(label, sizeof label, "2^%dx", e);
     text(canvas, label, {px(ratio) - 12, height - bottom + 20});
   }
   for (int db = int(y_lo); db <= int(y_hi); db += std::max(1, int(y_hi - y_lo) / 8)) {
@@ -162,7 +166,13 @@ void plot_pareto(const std::vector<TechniqueResult>& results, const std::string&
     const cv::Point p(px(r->frame_ratio), py(r->psnr_db));
     cv::circle(canvas, p, r->pareto ? 7 : 5, family_colour(*r), r->pareto ? -1 : 2, cv::LINE_AA);
     // Only the front is labelled in the plot (the rest cluster); the legend lists everything.
-    if (r->pareto) text(canvas, short_label(*r), p + cv::Point(8, -6), 0.4, family_colour(*r));
+    if (r->pareto) {
+      // Right of the point, or left of it where the label would run into the legend.
+      int baseline = 0;
+      const int w = cv::getTextSize(short_label(*r), cv::FONT_HERSHEY_SIMPLEX, 0.4, 1, &baseline).width;
+      const int x = p.x + 8 + w > width - right - 4 ? p.x - 8 - w : p.x + 8;
+      text(canvas, short_label(*r), {x, p.y - 6}, 0.4, family_colour(*r));
+    }
     char line[96];
     std::snprintf(line, sizeof line, "%s %s", r->pareto ? "*" : " ", short_label(*r).c_str());
     text(canvas, line, {width - right + 10, legend_y}, 0.4, family_colour(*r));
