@@ -58,7 +58,7 @@ Camera parse_camera(const std::string& text, const glm::vec3& lo, const glm::vec
     const double x = std::strtod(item.c_str(), &end);
     if (end == item.c_str() || std::string(end).find_first_not_of(" \t") != std::string::npos)
       throw std::invalid_argument("--camera: '" + item + "' is not a number");
-    if (!std::isfinite(x) || std::abs(x) > 3.0e38) throw std::invalid_argument("--camera: values must be finite");
+    if (!std::isfinite(x)) throw std::invalid_argument("--camera: values must be finite");
     v.push_back(float(x));
   }
   if (v.size() != 6 && v.size() != 7)

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -389,7 +390,7 @@ std::string scene_short_name(const std::string& spec) {
   // A part of file names (pareto-NAME.png) and of reports' lines: no control characters (a
   // newline in a model's path made two lines of one name).
   for (char& c : short_name)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '_';
+    if (std::iscntrl(static_cast<unsigned char>(c))) c = '_';
   return short_name;
 }
 

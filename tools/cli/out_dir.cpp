@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -55,7 +56,7 @@ std::vector<std::string> StagedOutputs::commit(const std::string& set_name) {
     const std::string name = entry.path().filename().string();
     if (name.rfind('.', 0) == 0) continue;  // a writer's own temporary
     // The set list holds a name a line: a name with a control character could name another file.
-    if (std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+    if (std::any_of(name.begin(), name.end(), [](char c) { return std::iscntrl(static_cast<unsigned char>(c)); }))
       throw std::runtime_error("--out-dir: a report file name holds a control character: '" + name + "'");
     files.emplace_back((out_dir_ / name).string(), read_whole_file(entry.path().string(), kMaxStagedFileBytes));
     names.push_back(name);
