@@ -325,6 +325,8 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
     if (material->GetTexture(aiTextureType_BASE_COLOR, 0, &file) != aiReturn_SUCCESS &&
         material->GetTexture(aiTextureType_DIFFUSE, 0, &file) != aiReturn_SUCCESS)
       continue;
+    // An empty name is no texture (MD5's `shader ""`), not the model's directory.
+    if (file.length == 0) continue;
     TextureSource& source = model.textures[m];
     if (const aiTexture* embedded = ai->GetEmbeddedTexture(file.C_Str())) {
       if (embedded->mHeight != 0) continue;  // raw texel arrays: not used by the test models
@@ -410,9 +412,9 @@ Scene with_textures(ImportedModel model) {
   for (std::size_t m = 0; m < model.textures.size(); ++m) {
     const TextureSource& source = model.textures[m];
     if (source.name.empty()) continue;
-    // A texture that is missing or cannot be decoded leaves the material's colour (the geometry
-    // is still worth drawing); one that is not a regular file or is over the budget refuses the
-    // model, as every other reader does.
+    // A texture that is missing, a directory or cannot be decoded leaves the material's colour
+    // (the geometry is still worth drawing); one that is another kind of file (a FIFO, a device)
+    // or over the budget refuses the model, as every other reader does.
     try {
       DecodedImage decoded;
       if (source.embedded) {
@@ -420,6 +422,12 @@ Scene with_textures(ImportedModel model) {
       } else {
         if (!std::filesystem::exists(source.name, ec)) {
           std::fprintf(stderr, "rsaa: warning: %s: texture '%s' not found; drawn in its material's colour\n",
+                       what.c_str(), source.name.c_str());
+          continue;
+        }
+        // A name that resolves to a directory (a path that ends in a separator) names no image.
+        if (std::filesystem::is_directory(source.name, ec)) {
+          std::fprintf(stderr, "rsaa: warning: %s: texture '%s' is a directory; drawn in its material's colour\n",
                        what.c_str(), source.name.c_str());
           continue;
         }

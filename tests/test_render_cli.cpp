@@ -94,8 +94,8 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 2);  // inputs only
 }
 
-// A texture that is missing or cannot be decoded leaves the material's colour (the geometry is
-// still worth drawing), and says so: it used to be dropped without a word.
+// A texture that is missing, a directory or cannot be decoded leaves the material's colour (the
+// geometry is still worth drawing), and says so: it used to be dropped without a word.
 TEST(RenderCli, AModelsMissingOrBrokenTextureIsSaid) {
   TempDir dir;
   test::write_text(dir.file("m.obj"), "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n");
@@ -109,6 +109,19 @@ TEST(RenderCli, AModelsMissingOrBrokenTextureIsSaid) {
   r = run_rsaa("render --scene " + dir.file("m.obj") + " --width 32 --height 24 --out " + dir.file("b.png"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("texture not used (" + dir.file("t.png")), std::string::npos) << r.output;
+  // A texture name that resolves to a directory names no image: the same (it refused the model).
+  test::write_text(dir.file("m.mtl"), "newmtl a\nKd 1 0 0\nmap_Kd sub/\n");
+  std::filesystem::create_directory(dir.file("sub"));
+  r = run_rsaa("render --scene " + dir.file("m.obj") + " --width 32 --height 24 --out " + dir.file("c.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("is a directory; drawn in its material's colour"), std::string::npos) << r.output;
+  // An empty texture name is no texture (MD5's `shader ""`, which resolved to the model's
+  // directory and refused the model); nothing to say.
+  const std::string md5 = "/usr/share/assimp/models/MD5/SimpleCube.md5mesh";
+  if (!std::filesystem::exists(md5)) GTEST_SKIP() << md5 << " (assimp-testmodels) is not installed";
+  r = run_rsaa("render --scene " + md5 + " --width 32 --height 24 --out " + dir.file("d.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("texture"), std::string::npos) << r.output;
 }
 
 TEST(CompareCli, RejectsMissingAndMismatchedImages) {
