@@ -160,6 +160,54 @@ TEST(AtomicFiles, AJournalPointingOutsideTheDirectoryIsNotFollowed) {
   EXPECT_EQ(read_committed_file(dir.file("t.json")), "target");
 }
 
+// A dead run's journal is a file anyone who can write the directory can make: the next writer
+// there finishes only renames its run can have meant (a temporary of that run beside its target,
+// both in the journal's directory). Followed blindly, it moved a file from anywhere and
+// overwrote another (an absolute or a relative path, or a user's own file in the directory).
+TEST(AtomicFiles, AJournalIsFollowedOnlyForItsRunsOwnTemporariesInItsDirectory) {
+  TempDir dir, elsewhere;
+  const pid_t child = fork();
+  if (child == 0) _exit(0);
+  waitpid(child, nullptr, 0);  // a PID that no longer runs
+  const std::string pid = std::to_string(child);
+  const auto field = [](const std::string& s) { return std::to_string(s.size()) + ":" + s; };
+  test::write_text(elsewhere.file("victim"), "user data");
+  test::write_text(dir.file("payload"), "payload");
+  test::write_text(dir.file("mine.txt"), "user file");
+  const std::string journal = dir.file(".rsaa-commit.rsaa-tmp-" + pid + "-0.journal");
+  for (const std::string& text : {
+           field(elsewhere.file("victim")) + field(dir.file("moved")),              // a file from elsewhere
+           field(dir.file("payload")) + field(elsewhere.file("victim")),            // over a file elsewhere
+           field("payload") + field("mine.txt"),                                     // relative paths
+           field(dir.file("payload")) + field(dir.file("mine.txt")),                // not a temporary
+           field(dir.file(".payload.rsaa-tmp-1-0")) + field(dir.file("mine.txt")),  // another run's
+       }) {
+    SCOPED_TRACE(text);
+    test::write_text(journal, text);
+    write_file_atomically(dir.file("other.txt"), "x");  // any later write into the directory
+    EXPECT_EQ(test::read_text(elsewhere.file("victim")), "user data");
+    EXPECT_EQ(test::read_text(dir.file("payload")), "payload");
+    EXPECT_EQ(test::read_text(dir.file("mine.txt")), "user file");
+    EXPECT_FALSE(std::filesystem::exists(dir.file("moved")));
+    EXPECT_TRUE(std::filesystem::exists(journal)) << "left for a person to look at";
+  }
+  // The run's own temporary beside its target is still finished.
+  const std::string temporary = dir.file(".mine.rsaa-tmp-" + pid + "-1.txt");
+  test::write_text(temporary, "committed");
+  test::write_text(journal, field(temporary) + field(dir.file("mine.txt")));
+  write_file_atomically(dir.file("other.txt"), "y");
+  EXPECT_EQ(test::read_text(dir.file("mine.txt")), "committed");
+  EXPECT_FALSE(std::filesystem::exists(journal));
+}
+
+// One set, one directory: the journal lists renames within it only.
+TEST(AtomicFiles, ASetSpanningTwoDirectoriesIsRefused) {
+  TempDir a, b;
+  EXPECT_THROW(write_files_atomically({{a.file("x"), "1"}, {b.file("y"), "2"}}), std::logic_error);
+  EXPECT_FALSE(std::filesystem::exists(a.file("x")));
+  EXPECT_FALSE(std::filesystem::exists(b.file("y")));
+}
+
 TEST(AtomicFiles, ATargetThatIsNotAFileIsRefusedBeforeAnythingChanges) {
   TempDir dir;
   test::write_text(dir.file("t.json"), "old");

@@ -159,21 +159,48 @@ bool read_journal(const std::string& journal, std::vector<std::pair<std::string,
   return true;
 }
 
-// Finishes the renames a dead run's journal lists (the temporaries still there); false when the
-// journal cannot be read or parsed (it is then left for a person to look at).
-bool roll_forward(const std::string& journal) {
-  std::vector<std::pair<std::string, std::string>> renames;
-  if (!read_journal(journal, renames)) return false;
-  for (const auto& [temporary, target] : renames)
-    if (::access(temporary.c_str(), F_OK) == 0) ::rename(temporary.c_str(), target.c_str());
-  return true;
-}
-
 bool is_journal_name(const std::string& name) {
   const std::string ext = ".journal";
   return name.rfind(kJournalStem, 0) == 0 && name.size() > ext.size() &&
          name.compare(name.size() - ext.size(), ext.size(), ext) == 0;
 }
+
+// Whether a journal's (temporary, target) pair is one its run can have written: the target in the
+// journal's own directory, the temporary beside it and named as that run's temporaries are
+// (temporary_path_beside(), the journal's PID). A journal is a file anyone who can write the
+// directory can make: followed blindly, it renamed any file the user could reach over any other.
+bool is_own_rename(const fs::path& journal, const std::string& temporary, const std::string& target) {
+  // Directories compared as the file system resolves them (a run may have reached the directory
+  // through a symbolic link, the next one not).
+  std::error_code ec;
+  const auto resolved = [&ec](const fs::path& p) { return fs::weakly_canonical(fs::absolute(p, ec), ec); };
+  const fs::path dir = resolved(journal.parent_path());
+  const fs::path from = fs::path(temporary), to = fs::path(target);
+  if (!from.is_absolute() || !to.is_absolute() || resolved(from.parent_path()) != dir ||
+      resolved(to.parent_path()) != dir || ec)
+    return false;
+  const std::string name = from.filename().string(), target_name = to.filename().string();
+  if (target_name.empty() || target_name == "." || target_name == ".." || is_journal_name(target_name)) return false;
+  const pid_t pid = pid_of_temporary(name);
+  return pid != 0 && pid == pid_of_temporary(journal.filename().string()) &&
+         pid_of_temporary(target_name) == 0;
+}
+
+// Finishes the renames a dead run's journal lists (the temporaries still there); false when the
+// journal cannot be read or parsed, or lists a rename its run cannot have meant (it is then left,
+// untouched, for a person to look at).
+bool roll_forward(const std::string& journal) {
+  std::vector<std::pair<std::string, std::string>> renames;
+  if (!read_journal(journal, renames)) return false;
+  for (const auto& [temporary, target] : renames)
+    if (!is_own_rename(journal, temporary, target)) return false;
+  for (const auto& [temporary, target] : renames) {
+    struct stat st {};
+    if (::lstat(temporary.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::rename(temporary.c_str(), target.c_str());
+  }
+  return true;
+}
+
 
 }  // namespace
 
@@ -221,6 +248,12 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
   if (files.empty()) return;
   std::set<std::string> dirs;
   for (const auto& file : files) dirs.insert(directory_of(file.first));
+  // One directory: its journal lists renames within that directory only (is_own_rename()).
+  std::set<fs::path> resolved_dirs;
+  for (const std::string& dir : dirs) resolved_dirs.insert(fs::absolute(dir).lexically_normal());
+  if (resolved_dirs.size() > 1)
+    throw std::logic_error("write_files_atomically: the files of one set must share a directory (" + *dirs.begin() +
+                           ", " + *dirs.rbegin() + ")");
   for (const std::string& dir : dirs) remove_stale_temporaries(dir);
 
   // A target must be a regular file or absent: anything else could not be restored.
