@@ -25,8 +25,18 @@ struct Layout {
   int read_end = 0;         // channels [0, read_end) are read
 };
 
+// OpenImageIO's alpha index, or where a channel is named alpha when the index points nowhere (its
+// GIF reader reports four channels, "A" the fourth, and alpha index 4: read as given, every pixel
+// was taken with a stride of five channels).
+int alpha_index(const OIIO::ImageSpec& spec) {
+  if (spec.alpha_channel >= 0 && spec.alpha_channel < spec.nchannels) return spec.alpha_channel;
+  for (int c = 0; c < spec.nchannels && c < int(spec.channelnames.size()); ++c)
+    if (spec.channelnames[std::size_t(c)] == "A" || spec.channelnames[std::size_t(c)] == "Alpha") return c;
+  return -1;
+}
+
 Layout layout_of(const std::string& name, const OIIO::ImageSpec& spec) {
-  const int n = spec.nchannels, a = spec.alpha_channel;
+  const int n = spec.nchannels, a = alpha_index(spec);
   const auto refuse = [&](const std::string& why) -> Layout {
     throw std::runtime_error(name + ": " + std::to_string(n) + " channels (" + why +
                              "); expected grey, grey+alpha, RGB or RGBA");
@@ -75,15 +85,28 @@ DecodedImage decode(const std::string& name, const std::string& bytes, const Ima
                    spec.format.basetype == OIIO::TypeDesc::DOUBLE;
   d.premultiplied = layout.alpha >= 0 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) == 0;
   d.rgba.resize(pixels * 4);
-  // A band of rows at a time: the channels read may be more than the four kept.
-  const int band = std::max(1, int((std::size_t{1} << 20) / (std::size_t(spec.width) * layout.read_end)));
+  // A band of rows at a time: the channels read may be more than the four kept. A tiled file is
+  // read by whole rows of tiles (OpenImageIO 2.4's read_scanlines died of SIGFPE on tiled files).
+  const bool tiled = spec.tile_width > 0 && spec.tile_height > 0;
+  const std::size_t row_floats = std::size_t(spec.width) * std::size_t(layout.read_end);
+  int band = std::max(1, int((std::size_t{1} << 20) / row_floats));
+  if (tiled) {
+    constexpr std::size_t kMaxBandFloats = std::size_t{1} << 26;  // 256 MiB of floats
+    if (std::size_t(spec.tile_height) * row_floats > kMaxBandFloats)
+      throw LimitError(name + ": " + budget.what + " has tiles " + std::to_string(spec.tile_width) + "x" +
+                       std::to_string(spec.tile_height) + " pixels high; a row of them takes more than " +
+                       std::to_string(kMaxBandFloats * 4 >> 20) + " MiB to read");
+    band = std::max(1, band / spec.tile_height) * spec.tile_height;
+  }
   std::vector<float> rows;
   for (int y0 = 0; y0 < spec.height; y0 += band) {
     const int y1 = std::min(spec.height, y0 + band);
-    rows.resize(std::size_t(y1 - y0) * spec.width * layout.read_end);
-    if (!in->read_scanlines(0, 0, spec.y + y0, spec.y + y1, spec.z, 0, layout.read_end,
-                            OIIO::TypeDesc::FLOAT, rows.data()))
-      throw std::runtime_error(name + ": cannot read pixels (" + in->geterror() + ")");
+    rows.resize(std::size_t(y1 - y0) * row_floats);
+    const bool read = tiled ? in->read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y0, spec.y + y1, spec.z,
+                                             spec.z + 1, 0, layout.read_end, OIIO::TypeDesc::FLOAT, rows.data())
+                            : in->read_scanlines(0, 0, spec.y + y0, spec.y + y1, spec.z, 0, layout.read_end,
+                                                 OIIO::TypeDesc::FLOAT, rows.data());
+    if (!read) throw std::runtime_error(name + ": cannot read pixels (" + in->geterror() + ")");
     for (std::size_t i = 0; i < std::size_t(y1 - y0) * spec.width; ++i) {
       const float* p = &rows[i * layout.read_end];
       float* out = &d.rgba[(std::size_t(y0) * spec.width + i) * 4];

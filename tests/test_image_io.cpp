@@ -72,6 +72,47 @@ TEST(ImageLayout, GreyGreyAlphaRgbAndRgbaAreReadByTheirLayout) {
   }
 }
 
+// A 61 x 47 8-bit RGB gradient, as OpenImageIO writes it to `path` (tiled 16 x 16 when `tiled`).
+void write_gradient(const std::string& path, bool tiled) {
+  constexpr int w = 61, h = 47;
+  auto out = OIIO::ImageOutput::create(path);
+  OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
+  if (tiled) spec.tile_width = spec.tile_height = 16;
+  std::vector<std::uint8_t> pixels;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      pixels.insert(pixels.end(), {std::uint8_t(x * 4), std::uint8_t(y * 5), std::uint8_t((x + y) * 2)});
+  ASSERT_TRUE(out && out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && out->close())
+      << path;
+}
+
+// Tiled files (TIFF, EXR, MIP-mapped .tx) are read by rows of tiles, partial tiles at the right and
+// bottom included: OpenImageIO's scanline reader died of SIGFPE on them (compare, a model's texture).
+TEST(ImageLayout, TiledFilesAreReadAsTheirScanlineTwins) {
+  TempDir dir;
+  write_gradient(dir.file("scan.png"), false);
+  write_gradient(dir.file("tiled.tif"), true);
+  const DisplayImage scan = read_display_image(dir.file("scan.png")), tiled = read_display_image(dir.file("tiled.tif"));
+  ASSERT_EQ(tiled.width, 61);
+  ASSERT_EQ(tiled.height, 47);
+  EXPECT_EQ(tiled.rgb, scan.rgb);
+}
+
+// OpenImageIO's GIF reader gives four channels (R, G, B, "A") and alpha index 4, past the last:
+// the alpha is found by its name (read at the index, every pixel was taken five channels apart).
+TEST(ImageLayout, AnAlphaIndexPastTheChannelsIsFoundByName) {
+  TempDir dir;
+  write_8bit(dir.file("c.png"), 3, -1, {200, 10, 90});
+  write_8bit(dir.file("c.gif"), 3, -1, {200, 10, 90});
+  auto in = OIIO::ImageInput::open(dir.file("c.gif"));
+  ASSERT_TRUE(in);
+  EXPECT_GE(in->spec().alpha_channel, in->spec().nchannels) << "the reader this guards against is fixed";
+  const Rgb png = read_image(dir.file("c.png")).at(2, 1), gif = read_image(dir.file("c.gif")).at(2, 1);
+  EXPECT_FLOAT_EQ(gif.r, png.r);
+  EXPECT_FLOAT_EQ(gif.g, png.g);
+  EXPECT_FLOAT_EQ(gif.b, png.b);
+}
+
 TEST(ImageMetrics, NonFinitePixelsMakeEveryFigureUndefined) {
   Image nan(4, 4), black(4, 4);
   nan.at(1, 2).g = std::numeric_limits<float>::quiet_NaN();
