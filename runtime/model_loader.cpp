@@ -361,9 +361,11 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
         out.uv = {mesh->mTextureCoords[0][v].x, 1.0f - mesh->mTextureCoords[0][v].y};
       out.albedo = albedo;
       if (mesh->HasVertexColors(0)) {
+        // A reflectance, as the material's colour: in [0, 1] (a colour of -5 or 1e38 gave negative
+        // or half-float-saturated linear pixels).
         const aiColor4D& c = mesh->mColors[0][v];
-        out.albedo *= glm::vec3(std::isfinite(c.r) ? c.r : 1, std::isfinite(c.g) ? c.g : 1,
-                                std::isfinite(c.b) ? c.b : 1);
+        const auto reflectance = [](float x) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : 1.0f; };
+        out.albedo *= glm::vec3(reflectance(c.r), reflectance(c.g), reflectance(c.b));
       }
       scene.vertices.push_back(out);
     }

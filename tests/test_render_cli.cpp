@@ -124,6 +124,26 @@ TEST(RenderCli, AModelsMissingOrBrokenTextureIsSaid) {
   EXPECT_EQ(r.output.find("texture"), std::string::npos) << r.output;
 }
 
+// Vertex colours are reflectances, as material colours: clamped to [0, 1]. A colour of -5 gave
+// negative linear pixels and one of 1e38 the half float's largest value, without a word.
+TEST(RenderCli, VertexColoursOutsideZeroToOneAreClamped) {
+  TempDir dir;
+  for (const char* colour : {"-5 -5 -5", "1e38 1e38 1e38"}) {
+    SCOPED_TRACE(colour);
+    std::string obj;
+    for (const char* corner : {"0 0 0", "1 0 0", "0 1 0", "1 1 0"}) obj += std::string("v ") + corner + " " + colour + "\n";
+    test::write_text(dir.file("m.obj"), obj + "f 1 2 3\nf 2 4 3\n");
+    const auto r = run_rsaa("render --scene " + dir.file("m.obj") + " --width 32 --height 24 --out " + dir.file("m.exr"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const Image image = read_image(dir.file("m.exr"));
+    float lowest = 0.0f, highest = 0.0f;
+    for (const Rgb& p : image.pixels)
+      for (const float c : {p.r, p.g, p.b}) lowest = std::min(lowest, c), highest = std::max(highest, c);
+    EXPECT_GE(lowest, 0.0f);
+    EXPECT_LE(highest, 2.0f);  // white lit by the scene's light and highlight
+  }
+}
+
 TEST(CompareCli, RejectsMissingAndMismatchedImages) {
   TempDir dir;
   ASSERT_EQ(run_rsaa("render --width 16 --height 16 --out " + dir.file("a.png")).exit_code, 0);
