@@ -288,7 +288,12 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
           " bytes per byte of its " + std::to_string(io->input_bytes) + " bytes of files, at most " +
           mib(kImportBytesMax) + "): the importer asked for " + std::to_string(budget.refused_request()) +
           " bytes with " + mib(std::uint64_t(std::max<std::int64_t>(0, budget.live_when_refused()))) +
-          " in use; the file declares (or inflates to) more than it holds");
+          " in use; " +
+          (budget.limit() >= kImportBytesMax
+               ? std::string("a model this large is beyond the most any model may take to import "
+                             "(a binary STL of 1 million triangles fits, one of 3 million does not; "
+                             "docs/reliability.md)")
+               : std::string("the file declares (or inflates to) more than it holds")));
     io->end_budget();
   }
   // A file the model refers to that was refused (a FIFO, a device, over the budget) refuses
