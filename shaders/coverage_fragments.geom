@@ -8,6 +8,8 @@
 // extrapolated perspective-correctly, so interpolation inside the triangle is unchanged.
 // Triangles that reach behind the eye (w <= 0) are drawn as they are and flagged: the fragment
 // stage then gives them the centre sample's coverage only (no-AA behaviour at the near plane).
+#include "scene_normal_side.glsl"
+
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
@@ -28,6 +30,7 @@ out FragmentData {
   vec3 albedo;
   float filter_alpha;
   flat vec3 face_normal;
+  flat float normal_side;  // scene_normal_side.glsl
 } g_out;
 
 out CoverageTriangle {
@@ -47,6 +50,8 @@ void main() {
   float len = length(face);
   face = len > 0.0 ? face / len : vec3(0.0, 0.0, 1.0);
   if (dot(face, -v_in[0].view_position) < 0.0) face = -face;  // facing the viewer
+  float side = scene_normal_side(face, v_in[0].view_normal + v_in[1].view_normal + v_in[2].view_normal,
+                                 v_in[0].view_position);
 
   vec4 clip[3] = vec4[3](gl_in[0].gl_Position, gl_in[1].gl_Position, gl_in[2].gl_Position);
   bool in_front = clip[0].w > 1e-6 && clip[1].w > 1e-6 && clip[2].w > 1e-6;
@@ -108,6 +113,7 @@ void main() {
     g_out.albedo = m.x * v_in[0].albedo + m.y * v_in[1].albedo + m.z * v_in[2].albedo;
     g_out.filter_alpha = m.x * v_in[0].filter_alpha + m.y * v_in[1].filter_alpha + m.z * v_in[2].filter_alpha;
     g_out.face_normal = face;
+    g_out.normal_side = side;
     EmitVertex();
   }
   EndPrimitive();

@@ -12,6 +12,7 @@ in FragmentData {
   vec3 albedo;
   float filter_alpha;
   flat vec3 face_normal;
+  flat float normal_side;  // scene_normal_side.glsl
 } f_in;
 
 uniform uint u_primitive_base;  // first primitive id of this draw in the centre primitive target

@@ -1,5 +1,7 @@
 // The paper's preGS: the geometric normal of each triangle, computed here so that no
 // application data is needed; passes the primitive id on for the fully-covered shortcut.
+#include "scene_normal_side.glsl"
+
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
@@ -18,6 +20,7 @@ out FragmentData {
   vec3 albedo;
   float filter_alpha;
   flat vec3 face_normal;
+  flat float normal_side;  // scene_normal_side.glsl
 } g_out;
 
 void main() {
@@ -27,6 +30,8 @@ void main() {
   float len = length(n);
   // A degenerate triangle has no plane; it covers no pixel, give it any unit normal.
   vec3 face = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+  float side = scene_normal_side(face, v_in[0].view_normal + v_in[1].view_normal + v_in[2].view_normal,
+                                 v_in[0].view_position);
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
     gl_PrimitiveID = gl_PrimitiveIDIn;
@@ -36,6 +41,7 @@ void main() {
     g_out.albedo = v_in[i].albedo;
     g_out.filter_alpha = v_in[i].filter_alpha;
     g_out.face_normal = face;
+    g_out.normal_side = side;
     EmitVertex();
   }
   EndPrimitive();

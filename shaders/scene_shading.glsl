@@ -13,6 +13,7 @@ in FragmentData {
   vec3 albedo;
   float filter_alpha;
   flat vec3 face_normal;
+  flat float normal_side;  // scene_normal_side.glsl
 } f_in;
 
 uniform sampler2D u_texture;
@@ -20,11 +21,13 @@ uniform bool u_has_texture;
 uniform uint u_primitive_base;
 uniform uint u_material;  // the draw's material (Scene::draws), for RSAA's material edges
 
-// The interpolated shading normal (the face's where a model's normals are broken), unit.
+// The interpolated shading normal, unit, on the side of the triangle the eye sees (two-sided
+// shading, scene_normal_side.glsl); where a model's normals are broken, the face's, towards the eye.
 vec3 scene_shading_normal() {
   vec3 n = normalize(f_in.view_normal);
-  if (!all(equal(n, n))) n = f_in.face_normal;  // NaN normals from a model: use the face
-  return n;
+  if (!all(equal(n, n)))  // NaN normals from a model: use the face
+    return dot(f_in.face_normal, f_in.view_position) > 0.0 ? -f_in.face_normal : f_in.face_normal;
+  return n * f_in.normal_side;
 }
 
 vec3 scene_albedo() {

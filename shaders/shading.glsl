@@ -1,6 +1,7 @@
 // The scene's shading function, shared by every program that shades (forward passes and the
 // aggregate shading of agaa): a fixed directional light in view space and optional point lights,
-// Lambert diffuse plus a Phong lobe, two-sided. Linear light. core/reference/scene_shading.h is its CPU twin (the AGAA oracle).
+// Lambert diffuse plus a Phong lobe, two-sided (the normal given on the side the eye sees).
+// Linear light. core/reference/scene_shading.h is its CPU twin (the AGAA oracle).
 #ifndef RSAA_SHADING_GLSL
 #define RSAA_SHADING_GLSL
 
@@ -21,8 +22,8 @@ layout(std140, binding = 4) uniform ScenePointLights {
 // to Na (the mean of n.l is Na.l while no normal faces away from the light); 1 elsewhere.
 vec3 shade_surface(vec3 albedo, vec3 n, vec3 view_position, float specular_exponent, float specular_scale,
                    float diffuse_scale) {
+  // n is on the seen side already (scene_shading_normal(), or the mean of such normals).
   vec3 to_eye = normalize(-view_position);
-  if (dot(n, to_eye) < 0.0) n = -n;
   const vec3 light = normalize(vec3(-0.4, 0.7, 0.6));
   float diffuse = max(dot(n, light), 0.0);
   float specular = pow(max(dot(reflect(-light, n), to_eye), 0.0), specular_exponent);

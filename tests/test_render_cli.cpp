@@ -144,6 +144,45 @@ TEST(RenderCli, VertexColoursOutsideZeroToOneAreClamped) {
   }
 }
 
+// Two-sided shading turns a triangle's normals once per triangle (scene_normal_side.glsl): a quad
+// facing the eye whose smooth normals turn away from it towards one side is shaded smoothly
+// across. Turned per fragment by the interpolated normal, as it was, the light jumped where that
+// normal crossed the view plane: a hard line inside one surface (seen on a box with averaged
+// normals and on character models). And a quad seen from its back (normals away from the eye) is
+// shaded as its front.
+TEST(RenderCli, TwoSidedShadingIsContinuousAcrossATriangle) {
+  TempDir dir;
+  const auto quad = [&](const std::string& name, const char* left_normal, const char* right_normal) {
+    test::write_text(dir.file(name), std::string("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvn ") + left_normal +
+                                         "\nvn " + right_normal + "\nf 1//1 2//2 3//2\nf 1//1 3//2 4//1\n");
+    const auto r = run_rsaa("render --scene " + dir.file(name) + " --camera 0,0,3,0,0,0,60 --width 64 --height 48 --out " +
+                            dir.file(name + ".exr"));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return read_image(dir.file(name + ".exr"));
+  };
+  // Left edge's normal 107 degrees from the eye, the right edge's towards it.
+  const Image turning = quad("turning.obj", "-1 0 -0.3", "0 0 1");
+  const Rgb background = turning.at(0, 0);
+  const auto luminance = [](const Rgb& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; };
+  float largest_step = 0.0f;
+  int inside = 0;
+  for (int x = 1; x < turning.width; ++x) {
+    const Rgb a = turning.at(x - 1, 24), b = turning.at(x, 24);
+    if (a.r == background.r || b.r == background.r) continue;
+    ++inside;
+    largest_step = std::max(largest_step, std::abs(luminance(a) - luminance(b)));
+  }
+  EXPECT_GT(inside, 20);
+  EXPECT_LT(largest_step, 0.05f) << "a jump of the light inside the quad";
+  const Image front = quad("front.obj", "0 0 1", "0 0 1"), back = quad("back.obj", "0 0 -1", "0 0 -1");
+  ASSERT_EQ(front.pixels.size(), back.pixels.size());
+  int differing = 0;
+  for (std::size_t p = 0; p < front.pixels.size(); ++p)
+    differing += front.pixels[p].r != back.pixels[p].r || front.pixels[p].g != back.pixels[p].g ||
+                 front.pixels[p].b != back.pixels[p].b;
+  EXPECT_EQ(differing, 0);
+}
+
 TEST(CompareCli, RejectsMissingAndMismatchedImages) {
   TempDir dir;
   ASSERT_EQ(run_rsaa("render --width 16 --height 16 --out " + dir.file("a.png")).exit_code, 0);

@@ -1,6 +1,6 @@
 // The CPU twin of shaders/shading.glsl: the scene's shading of one surface point (fixed
-// directional light in view space plus optional point lights, Lambert + Phong, two-sided, linear
-// light). The AGAA oracle
+// directional light in view space plus optional point lights, Lambert + Phong, linear light; the
+// normal given on the side the eye sees). The AGAA oracle
 // shades its aggregates with it; tests compare it with the GL shading through the techniques.
 #pragma once
 
@@ -34,8 +34,9 @@ inline Normal3 normalized(Normal3 v) {
 // diffuse_scale: see shaders/shading.glsl (AGAA's filtered Lambert term), applied to every light.
 inline Rgb shade_surface(Rgb albedo, Normal3 n, Normal3 view_position, float specular_exponent, float specular_scale,
                          float diffuse_scale = 1.0f, const std::vector<PointLight>& point_lights = {}) {
+  // n is on the side the eye sees already (shaders/scene_normal_side.glsl, or the mean of such
+  // normals): turned here by the view, it flipped inside surfaces near silhouettes.
   const Normal3 to_eye = normalized({-view_position.x, -view_position.y, -view_position.z});
-  if (dot(n, to_eye) < 0.0f) n = {-n.x, -n.y, -n.z};
   // reflect(-l, n) . to_eye, with reflect(-l, n) = -l + 2 (n . l) n
   const auto specular_of = [&](Normal3 l) {
     const float nl = dot(n, l);
