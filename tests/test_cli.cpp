@@ -100,12 +100,22 @@ TEST(Cli, EvalTableJsonAndErrors) {
   std::string nan = good;
   nan.replace(nan.find("\"offsets\": [\n    [") + 18, 1, "NaN, 0");
   test::write_text(dir.file("nan.json"), nan);
-  for (const std::string name : {"truncated.json", "empty.json", "nan.json", "missing.json"}) {
-    const auto e = run_rsaa("eval-table " + dir.file(name));
+  // A hand-edited training object nested 3000 deep (without the set id, which no longer matches):
+  // --json echoed it indented, megabytes from a 6 KB table (100,000 deep: 8 GB and a crash).
+  std::string deep = good;
+  const std::size_t set_id = deep.find("  \"set_id\"");
+  ASSERT_NE(set_id, std::string::npos);
+  deep.erase(set_id, deep.find('\n', set_id) + 1 - set_id);
+  deep.replace(deep.find("\"training\": {") + 12, 1, "{\"x\": " + std::string(3000, '[') + std::string(3000, ']') + ", ");
+  test::write_text(dir.file("deep.json"), deep);
+  for (const std::string name : {"truncated.json", "empty.json", "nan.json", "missing.json", "deep.json"}) {
+    const auto e = run_rsaa("eval-table --cases 1000 --json " + dir.file(name));
     EXPECT_NE(e.exit_code, 0) << name;
-    EXPECT_NE(e.output.find(dir.file(name)), std::string::npos) << e.output;
-    EXPECT_EQ(e.output.find("terminate"), std::string::npos) << e.output;
+    EXPECT_NE(e.output.find(dir.file(name)), std::string::npos) << e.output.substr(0, 1000);
+    EXPECT_EQ(e.output.find("terminate"), std::string::npos) << e.output.substr(0, 1000);
   }
+  EXPECT_NE(run_rsaa("eval-table " + dir.file("deep.json")).output.find("deep.json: training: expected an object of at most"),
+            std::string::npos);
 }
 
 

@@ -79,6 +79,18 @@ TEST(OffsetTableJson, RejectsBrokenFiles) {
   expect_rejected(edited("[-0.125, -0.375]", "[-0.125, -0.4]"), "does not match the built-in");
   expect_rejected(edited("[-0.125, -0.375], ", ""), "pattern d3d4x has 4 samples");
   expect_rejected(edited("\"training\": {", "\"training\": 3, \"x\": {"), "training: expected an object");
+  // Nested 100,000 deep (eval-table --json echoed it in quadratic space) or very many values.
+  const std::size_t depth = 100000;
+  expect_rejected(edited("\"training\": {", "\"training\": {\"x\": " + std::string(depth, '[') +
+                                                 std::string(depth, ']') + ", "),
+                  "training: expected an object of at most 4096 values nested at most 16 levels");
+  std::string many = "[0";
+  for (int i = 0; i < 5000; ++i) many += ",0";
+  expect_rejected(edited("\"training\": {", "\"training\": {\"x\": " + many + "], "), "training: expected");
+  // Nested 16 levels in all is still read.
+  EXPECT_NO_THROW(parse_offset_table(
+      edited("\"training\": {", "\"training\": {\"x\": " + std::string(14, '[') + "1" + std::string(14, ']') + ", "),
+      "deep.json"));
 }
 
 // The set id: the same in the three files, a function of the contents, checked by the reader.

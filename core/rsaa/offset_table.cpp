@@ -109,6 +109,23 @@ class Reader {
   std::string origin_;
 };
 
+// Bounds of the free-form "training" object (the command and options that made the table, two
+// levels deep as written): it is copied into eval-table --json, whose indented output grew with
+// the square of a hand-edited nesting (100,000 levels took 8 GB and crashed).
+constexpr int kMaxTrainingLevels = 16;
+constexpr std::size_t kMaxTrainingValues = 4096;
+
+// Whether `value` nests at most `levels` deep (a number or string is one level, an object or
+// array one more than its deepest member), counting its values into `count`. Stops at the first
+// value too deep or too many, so the recursion and the walk are bounded too.
+bool nests_within(const json& value, int levels, std::size_t& count) {
+  if (levels < 1 || ++count > kMaxTrainingValues) return false;
+  if (value.is_structured())
+    for (const json& member : value)
+      if (!nests_within(member, levels - 1, count)) return false;
+  return true;
+}
+
 OffsetSource parse_source(const Reader& reader, const json& v, const std::string& where) {
   if (v.is_string()) {
     const std::string s = v.get<std::string>();
@@ -214,6 +231,11 @@ OffsetTable parse_table(const std::string& text, const std::string& origin, std:
   }
   const json& training = reader.field(root, "training");
   if (!training.is_object()) reader.fail("training", "expected an object");
+  std::size_t training_values = 0;
+  if (!nests_within(training, kMaxTrainingLevels, training_values))
+    reader.fail("training", "expected an object of at most " + std::to_string(kMaxTrainingValues) +
+                                " values nested at most " + std::to_string(kMaxTrainingLevels) +
+                                " levels deep (the command and options that made the table)");
   table.training = training;
   // Checked last, so that a broken field is named as such. A JSON without an id (written by
   // hand) is read alone; one with an id must be the table that id was made from.
