@@ -127,6 +127,13 @@ TEST(Cli, HostileOptionsAreRefusedWithAReason) {
   auto r = run_rsaa("eval-table --cases 4294967296 " + std::string(RSAA_SOURCE_DIR) + "/tables/d3d8x.json");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("needs about 400.0 GiB"), std::string::npos) << r.output;
+  // Under ulimit -v the address space runs out first: refused at once, not after generating
+  // every case (4 * 10^7 cases under 4 GB: 43 s, then "out of memory").
+  r = test::run_command("ulimit -v 600000 && " + std::string(RSAA_BINARY) + " eval-table --cases 6000000 --threads 2 " +
+                        std::string(RSAA_SOURCE_DIR) + "/tables/d3d8x.json");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.output.find("the address-space limit (ulimit -v) leaves"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("generating"), std::string::npos) << r.output;
   // A split cap that rounds to the paper's 0 or to 1 as a float.
   for (const char* cap : {"1e-320", "0.9999999999"}) {
     r = run_rsaa("shaders --split-cap " + std::string(cap) + " --out-dir " + dir.file(cap));

@@ -12,6 +12,7 @@
 
 #include "core/rsaa/case_set.h"
 #include "core/rsaa/table_accuracy.h"
+#include "core/util/parallel.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
 #include "tools/cli/progress.h"
@@ -98,6 +99,12 @@ void print_comparison(const std::vector<std::string>& files, const std::vector<T
 // Every case and its errors are kept, for the exact 95th percentile: about this many bytes a
 // case at the peak (measured: 0.95 GB for 10^7 cases, whatever the number of tables).
 constexpr double kBytesPerCase = 100.0;
+// Address space (ulimit -v) beyond what the process maps at the start, measured with the
+// smallest limit that runs 4 * 10^6 cases: about 110 bytes a case, and 72 MiB a worker thread
+// that gets work (its stack and malloc arena; the cases go out 2^14 at a time).
+constexpr double kAddressSpacePerCase = 120.0;
+constexpr double kAddressSpacePerThread = 72.0 * 1024 * 1024;
+constexpr std::uint64_t kCasesPerThreadTask = std::uint64_t{1} << 14;
 
 // A number from the first line of `path` that starts with `key` (a /proc or cgroup file), or -1.
 double read_number(const std::string& path, const std::string& key, double scale) {
@@ -125,25 +132,46 @@ double available_memory_bytes() {
   return available;
 }
 
+// The address space this process can still map under ulimit -v (RLIMIT_AS): the limit less what
+// it maps now (the first number of /proc/self/statm, in pages); -1 without a limit.
+double available_address_space_bytes() {
+  const std::uint64_t limit = address_space_limit();
+  if (limit == 0) return -1.0;
+  const double mapped = read_number("/proc/self/statm", "", double(sysconf(_SC_PAGESIZE)));
+  return std::max(0.0, double(limit) - std::max(0.0, mapped));
+}
+
+std::string gib(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  return text;
+}
+
 // A case count whose memory the machine does not have is refused before any work, rather than
-// the process being killed by the kernel part way (10^9 cases reached 23 GB).
-void require_memory_for(std::uint64_t cases) {
+// the process being killed by the kernel part way (10^9 cases reached 23 GB) or running out of
+// its address space after minutes (ulimit -v 4000000 and 4 * 10^7 cases: 43 s).
+void require_memory_for(std::uint64_t cases, int threads) {
   const double available = available_memory_bytes(), needed = double(cases) * kBytesPerCase;
-  if (available < 0) return;  // unknown: nothing to compare with
-  if (needed <= 0.8 * available) return;
-  const auto gib = [](double bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-    return std::string(text);
-  };
-  throw std::invalid_argument("--cases " + std::to_string(cases) + " needs about " + gib(needed) +
-                              " (every case's error is kept for the exact 95th percentile); this machine has " +
-                              gib(available) + " available: use at most " +
-                              std::to_string(std::uint64_t(0.8 * available / kBytesPerCase)) + " cases");
+  if (available >= 0 && needed > 0.8 * available)
+    throw std::invalid_argument("--cases " + std::to_string(cases) + " needs about " + gib(needed) +
+                                " (every case's error is kept for the exact 95th percentile); this machine has " +
+                                gib(available) + " available: use at most " +
+                                std::to_string(std::uint64_t(0.8 * available / kBytesPerCase)) + " cases");
+  const double address_space = available_address_space_bytes();
+  const std::uint64_t busy_threads = std::min<std::uint64_t>(threads, 1 + cases / kCasesPerThreadTask);
+  const double threads_need = double(busy_threads) * kAddressSpacePerThread;
+  const double space_needed = double(cases) * kAddressSpacePerCase + threads_need;
+  if (address_space >= 0 && space_needed > address_space)
+    throw std::invalid_argument(
+        "--cases " + std::to_string(cases) + " on " + std::to_string(busy_threads) + (busy_threads == 1 ? " thread" : " threads") + " needs about " +
+        gib(space_needed) + " of address space (every case's error is kept for the exact 95th percentile); the " +
+        "address-space limit (ulimit -v) leaves " + gib(address_space) + ": use at most " +
+        std::to_string(std::uint64_t(std::max(0.0, address_space - threads_need) / kAddressSpacePerCase)) +
+        " cases, fewer --threads, or raise ulimit -v");
 }
 
 int run_eval(const EvalArgs& a) {
-  require_memory_for(a.cases);
+  require_memory_for(a.cases, a.threads > 0 ? a.threads : default_thread_count());
   std::vector<OffsetTable> tables;
   for (const std::string& file : a.files) {
     tables.push_back(read_offset_table(file));
