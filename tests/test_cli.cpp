@@ -52,6 +52,9 @@ TEST(Cli, TrainIsByteIdenticalAcrossThreadCounts) {
 
 TEST(Cli, TrainRejectsBadOptionsWithoutWritingAnything) {
   TempDir dir;
+  std::string seventeen_pairs;
+  for (int i = 0; i < 17; ++i)
+    seventeen_pairs += std::to_string(i % 4 * 0.125 - 0.2) + "," + std::to_string(i / 4 * 0.1 - 0.2) + " ";
   const std::string out = " --out-dir " + dir.path();
   struct Bad {
     std::string args, message;
@@ -64,10 +67,17 @@ TEST(Cli, TrainRejectsBadOptionsWithoutWritingAnything) {
            {"train --pattern d3d8x --fit best", "--fit"},
            {"train --pattern custom-a --positions '0.1,0.2 0.9,0'", "sample 1"},
            {"train --pattern custom-a --positions '0.1;0.2'", "not an x,y pair"},
+           // More pairs than a table holds printed the run's header first; none said 1 to 64.
+           {"train --pattern custom-a --positions '" + seventeen_pairs + "'", "17 x,y pairs; tables allow 1 to 16"},
+           {"train --pattern custom-a --positions ' '", "0 x,y pairs; tables allow 1 to 16"},
+           // Read as 0 and as a denormal number.
+           {"train --pattern custom-a --positions '1e-400,0.1'", "sample 0 ('1e-400,0.1'): '1e-400' is too small"},
+           {"train --pattern custom-a --positions '0.1,-1e-310'", "sample 0 ('0.1,-1e-310'): '-1e-310' is too small"},
        }) {
     const auto r = run_rsaa(bad.args + out);
     EXPECT_NE(r.exit_code, 0) << bad.args;
     EXPECT_NE(r.output.find(bad.message), std::string::npos) << bad.args << "\n" << r.output;
+    EXPECT_EQ(r.output.find("rsaa train: pattern"), std::string::npos) << bad.args << "\n" << r.output;
   }
   EXPECT_EQ(file_count(dir.path()), 0u);
   // A missing --out-dir is created; one that cannot be is refused, named.

@@ -75,7 +75,7 @@ SamplePattern pattern_from_positions(const std::string& name, const std::vector<
                                 " letters, digits, '-' or '_'");
   if (positions.empty() || positions.size() > static_cast<std::size_t>(kMaxPatternSamples))
     throw std::invalid_argument("pattern '" + name + "' has " + std::to_string(positions.size()) +
-                                " samples; expected 1 to 64");
+                                " samples; expected 1 to " + std::to_string(kMaxPatternSamples));
   // A driver pattern's name says its count: gl8x with four positions would pass for eight.
   const int driver_samples = gl_pattern_samples(name);
   if (driver_samples > 0 && positions.size() != std::size_t(driver_samples))

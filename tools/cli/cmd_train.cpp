@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -39,7 +40,17 @@ struct TrainArgs {
   int width = 320, height = 240, views = 6;
 };
 
-// "x,y x,y ..." in pixel space (y down).
+// Whether a number's text has a nonzero digit before its exponent ("1e-400" has, "0.0e5" not).
+bool has_nonzero_mantissa(const std::string& number) {
+  for (char c : number) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') return true;
+  }
+  return false;
+}
+
+// "x,y x,y ..." in pixel space (y down): 1 to kMaxTableSamples pairs, checked before anything is
+// printed or created.
 std::vector<Vec2> parse_positions(const std::string& text) {
   std::vector<Vec2> out;
   std::istringstream in(text);
@@ -50,8 +61,21 @@ std::vector<Vec2> parse_positions(const std::string& text) {
     std::istringstream pair(token);
     if (!(pair >> p.x >> comma >> p.y) || comma != ',' || !pair.eof())
       throw std::invalid_argument("--positions: '" + token + "' is not an x,y pair");
+    // A coordinate below the smallest normal double reads as 0 ("1e-400") or a denormal: it
+    // would train another pattern than the one written.
+    const std::size_t at = token.find(',');
+    const std::pair<double, std::string> coordinates[] = {{p.x, token.substr(0, at)}, {p.y, token.substr(at + 1)}};
+    for (const auto& [value, number] : coordinates)
+      if (std::fpclassify(value) == FP_SUBNORMAL || (value == 0.0 && has_nonzero_mantissa(number)))
+        throw std::invalid_argument("--positions: sample " + std::to_string(out.size()) + " ('" + token + "'): '" +
+                                    number + "' is too small for a double (it reads as " +
+                                    (value == 0.0 ? std::string("0") : "a denormal number") + "); write 0 or a coordinate of at least " +
+                                    std::to_string(kMinSampleSpacing));
     out.push_back(p);
   }
+  if (out.empty() || out.size() > static_cast<std::size_t>(kMaxTableSamples))
+    throw std::invalid_argument("--positions: " + std::to_string(out.size()) + " x,y pairs; tables allow 1 to " +
+                                std::to_string(kMaxTableSamples) + " subsamples");
   return out;
 }
 
