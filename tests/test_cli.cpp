@@ -208,6 +208,7 @@ TEST(Cli, GivenBenchAndFiguresOptionsAreNeverIgnored) {
   struct Refused {
     std::string args, message;
   };
+  int runs = 0;
   for (const Refused& bad : std::vector<Refused>{
            {"bench --techniques ''", "--techniques: an empty value names nothing"},
            {"bench --lights ''", "--lights: an empty value names nothing"},
@@ -215,12 +216,22 @@ TEST(Cli, GivenBenchAndFiguresOptionsAreNeverIgnored) {
            {"bench --from-json " + dir.file("b.json") + " --width 100", "--width belongs to a measurement"},
            {"bench --from-json " + dir.file("b.json") + " --scenes builtin:edges", "--scenes belongs to a measurement"},
            {"bench --growth --from-json " + dir.file("b.json"), "--growth belongs to a measurement"},
+           // Refused after the directory was made (found as the scene loads), or once it was.
+           {"bench --lights 66", "--lights: '66' is not a light count within 1..65"},
+           {"bench --quick --scenes builtin:nonexistent", "unknown built-in scene 'builtin:nonexistent'"},
+           {"train --from-scene builtin:nonexistent", "unknown built-in scene 'builtin:nonexistent'"},
        }) {
-    const auto r = run_rsaa(bad.args + " --out-dir " + dir.file("out"));
+    const std::string out = dir.file("out" + std::to_string(++runs));
+    const auto r = run_rsaa(bad.args + " --out-dir " + out + "/inner");
     EXPECT_NE(r.exit_code, 0) << bad.args;
     EXPECT_NE(r.output.find(bad.message), std::string::npos) << bad.args << "\n" << r.output;
-    EXPECT_FALSE(std::filesystem::exists(dir.file("out"))) << bad.args;
+    EXPECT_FALSE(std::filesystem::exists(out)) << bad.args;
   }
+  // A directory that was there stays, with what it held.
+  std::filesystem::create_directories(dir.file("mine/empty"));
+  EXPECT_NE(run_rsaa("bench --quick --scenes builtin:nonexistent --out-dir " + dir.file("mine/empty/new")).exit_code, 0);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("mine/empty")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("mine/empty/new")));
   const auto keys = run_rsaa("view --keys ''");
   EXPECT_NE(keys.exit_code, 0);
   EXPECT_NE(keys.output.find("--keys: an empty value names nothing"), std::string::npos) << keys.output;

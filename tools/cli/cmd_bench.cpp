@@ -53,7 +53,10 @@ std::vector<int> light_counts(const std::string& list) {
       n = std::stoi(item, &end);
     } catch (const std::exception&) {
     }
-    if (end != item.size() || n < 1) throw std::invalid_argument("--lights: '" + item + "' is not a light count >= 1");
+    // The fixed light plus at most kMaxScenePointLights point lights (what the shaders hold).
+    if (end != item.size() || n < 1 || n > kMaxScenePointLights + 1)
+      throw std::invalid_argument("--lights: '" + item + "' is not a light count within 1.." +
+                                  std::to_string(kMaxScenePointLights + 1));
     out.push_back(n);
   }
   return out;

@@ -19,12 +19,29 @@ constexpr const char* kSetListPrefix = ".rsaa-set-";
 
 }  // namespace
 
-std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir, const std::string& purpose) {
+ClaimedOutDir::ClaimedOutDir(const std::string& dir, const std::string& purpose) {
   std::error_code error;
+  std::filesystem::path missing = std::filesystem::path(dir).lexically_normal();
+  if (missing.filename().empty()) missing = missing.parent_path();  // "out/" is "out"
+  for (; !missing.empty() && !std::filesystem::exists(std::filesystem::symlink_status(missing, error));
+       missing = missing.parent_path())
+    created_.push_back(missing);
   std::filesystem::create_directories(dir, error);
   if (error || !std::filesystem::is_directory(dir))
     throw std::invalid_argument("--out-dir: cannot create '" + dir + "'" + (error ? " (" + error.message() + ")" : ""));
-  return std::make_unique<DirectoryLock>(dir, purpose);
+  lock_ = std::make_unique<DirectoryLock>(dir, purpose);
+}
+
+ClaimedOutDir::~ClaimedOutDir() {
+  // Removed while still locked, so that no other run has claimed them; one that is not empty
+  // (this run's files, or another's) stays, and so do its parents.
+  std::error_code error;
+  for (const std::filesystem::path& dir : created_)
+    if (!std::filesystem::remove(dir, error)) break;
+}
+
+std::unique_ptr<ClaimedOutDir> claim_out_dir(const std::string& dir, const std::string& purpose) {
+  return std::make_unique<ClaimedOutDir>(dir, purpose);
 }
 
 StagedOutputs::StagedOutputs(const std::string& out_dir, const std::string& purpose)

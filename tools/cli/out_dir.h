@@ -11,9 +11,24 @@
 
 namespace rsaa::cli {
 
+// An output directory claimed by claim_out_dir. The directories the claim created go with it
+// while they are still empty: a command refused before writing (an unknown scene found only once
+// it loads) leaves no empty directory behind.
+class ClaimedOutDir {
+ public:
+  ClaimedOutDir(const std::string& dir, const std::string& purpose);
+  ~ClaimedOutDir();
+  ClaimedOutDir(const ClaimedOutDir&) = delete;
+  ClaimedOutDir& operator=(const ClaimedOutDir&) = delete;
+
+ private:
+  std::vector<std::filesystem::path> created_;  // the deepest first
+  std::unique_ptr<DirectoryLock> lock_;
+};
+
 // The output directory, created if missing, and held exclusively until the files are in place:
 // a second run of `purpose` into it is refused at once instead of mixing its files with ours.
-std::unique_ptr<DirectoryLock> claim_out_dir(const std::string& dir, const std::string& purpose);
+std::unique_ptr<ClaimedOutDir> claim_out_dir(const std::string& dir, const std::string& purpose);
 
 // The files a command writes as one set (a report with its plots and tables): the output
 // directory is claimed (claim_out_dir) for the whole run, the files are written into a staging
@@ -41,7 +56,7 @@ class StagedOutputs {
 
  private:
   std::filesystem::path out_dir_, staging_;
-  std::unique_ptr<DirectoryLock> lock_;
+  std::unique_ptr<ClaimedOutDir> lock_;
 };
 
 // "wrote DIR/a, b, c" on stderr: the files a command committed.
