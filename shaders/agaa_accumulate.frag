@@ -20,8 +20,7 @@ void main() {
     if (agaa_sample_primitive(p, s) == me) w[agaa_aggregate_of(meta, s)] += 1.0;
   if (w == vec4(0.0)) discard;
   w /= float(u_samples);
-  vec3 n = scene_shading_normal();
-  if (dot(n, -f_in.view_position) < 0.0) n = -n;  // average the sides that are seen
+  vec3 n = scene_shading_normal();  // on the side of its triangle that is seen
   vec3 albedo = scene_albedo();
   float z = f_in.view_position.z;
   for (int a = 0; a < 4; ++a) {

@@ -3,6 +3,8 @@
 // core/dynamic_coverage, and the resolved colours compared per pixel (within 2/255).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <cmath>
 
 #include "core/reference/dcaa.h"
@@ -287,16 +289,23 @@ TEST_F(CoverageGl, AgaaEqualsItsCpuReferenceOnTheSameSamples) {
   }
 }
 
+// On flat faces (the default scene) and on a model of smooth normals (the spider, whose
+// silhouettes' normals turn away from the eye: AGAA's aggregates turned them again per fragment
+// after the scene's shading had settled each triangle's side, and fell 5 dB, to 2.5 dB above no AA
+// at 160x120).
 TEST_F(CoverageGl, AgaaBeatsNoAaWithHardwareAndJitteredSamples) {
-  const Scene scene = load_scene("builtin:default");
-  const GpuScene gpu(scene);
-  const Camera camera = choose_camera(scene, std::nullopt);
-  const auto display = [&](const TechniqueOptions& o) { return to_display(render_frame(gpu, camera, o, 160, 120)); };
-  const DisplayImage reference = display(technique_options("ssaa", 64));
-  const double noaa = compare_images(display(technique_options("noaa")), reference).psnr_db;
-  for (int n : {4, 8}) {
-    const double agaa = compare_images(display(technique_options("agaa", n)), reference).psnr_db;
-    EXPECT_GT(agaa, noaa + 3.0) << n;
+  for (const std::string name : {"builtin:default", "/usr/share/assimp/models/OBJ/spider.obj"}) {
+    if (!std::filesystem::exists(name) && name.rfind("builtin:", 0) != 0) continue;  // assimp-testmodels
+    const Scene scene = load_scene(name);
+    const GpuScene gpu(scene);
+    const Camera camera = choose_camera(scene, std::nullopt);
+    const auto display = [&](const TechniqueOptions& o) { return to_display(render_frame(gpu, camera, o, 160, 120)); };
+    const DisplayImage reference = display(technique_options("ssaa", 64));
+    const double noaa = compare_images(display(technique_options("noaa")), reference).psnr_db;
+    for (int n : {4, 8}) {
+      const double agaa = compare_images(display(technique_options("agaa", n)), reference).psnr_db;
+      EXPECT_GT(agaa, noaa + 5.0) << name << ", " << n << " samples";
+    }
   }
 }
 
