@@ -23,6 +23,9 @@ uniform sampler2D u_max_depth;    // farthest visible depth of the pixel (window
 
 void main() {
   vec2 c = gl_FragCoord.xy;
+  // Window depth is linear in screen space over a triangle: these are its plane's slopes (taken
+  // before any branch, so that the quad's derivatives are defined).
+  vec2 depth_slopes = vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
   uvec2 coverage;
   vec3 plane;  // depth at the centre, d/dx, d/dy in pixel space (y down)
   if (f_cov.exact == 1) {
@@ -35,9 +38,10 @@ void main() {
     plane = vec3(dot(f_cov.depth_plane.xy, c) + f_cov.depth_plane.z, f_cov.depth_plane.x, -f_cov.depth_plane.y);
   } else {
     // Near-plane triangle, hardware rasterised: this fragment covers the centre; give it every
-    // sample (no-AA behaviour) and the rasteriser's depth.
+    // sample (no-AA behaviour) and the rasteriser's depth plane (flat, a floor reaching behind the
+    // eye took the samples of whatever stands on it wherever it lies nearer at the centre).
     coverage = u_full_mask;
-    plane = vec3(gl_FragCoord.z, 0.0, 0.0);
+    plane = vec3(gl_FragCoord.z, depth_slopes.x, -depth_slopes.y);
   }
   if (coverage == uvec2(0u)) discard;
   // Behind everything the z-prepass saw in this pixel (the tolerance covers the difference

@@ -7,7 +7,8 @@
 // The moved vertices are placed on the triangle's own plane in clip space, with attributes
 // extrapolated perspective-correctly, so interpolation inside the triangle is unchanged.
 // Triangles that reach behind the eye (w <= 0) are drawn as they are and flagged: the fragment
-// stage then gives them the centre sample's coverage only (no-AA behaviour at the near plane).
+// stage then gives a fragment covering the pixel centre every sample (no-AA behaviour at the near
+// plane) and the rasteriser's depth plane.
 #include "scene_normal_side.glsl"
 
 layout(triangles) in;

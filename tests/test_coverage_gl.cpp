@@ -183,6 +183,38 @@ TEST_F(CoverageGl, ThousandsOfStackedFragmentsEqualTheCpuReference) {
   }
 }
 
+// Every fragment's depth plane, near-plane triangles included (the grazing scene's floor reaches
+// behind the eye and is rasterised by the hardware), predicts the depth its triangle records in
+// the next pixel of the row: a flat plane there let the floor take the samples of the cylinder
+// lying on it wherever it was nearer at the pixel centre.
+TEST_F(CoverageGl, DepthPlanesPredictTheNeighbouringPixelNearPlaneTrianglesToo) {
+  const int width = 96, height = 72;
+  const Scene scene = load_scene("builtin:grazing");
+  const GpuScene gpu(scene);
+  const View view = make_view(choose_camera(scene, std::nullopt), width, height);
+  auto t = make_technique(technique_options("dcaa"), width, height);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, width, height);
+  t->render(gpu, view, output.get());
+  const auto pixels = coverage_lists_of(*t)->read_back();
+  // The next pixel right (x + 1) and the next row of the lists (one pixel down, as the planes' y).
+  int pairs = 0, wrong = 0;
+  for (int y = 0; y + 1 < height; ++y)
+    for (int x = 0; x + 1 < width; ++x)
+      for (const CoverageFragment& f : pixels[y * width + x])
+        for (int next : {y * width + x + 1, (y + 1) * width + x})
+          for (const CoverageFragment& g : pixels[next]) {
+            const float step = g.depth.at_centre - f.depth.at_centre;
+            if (g.order != f.order || !(std::abs(step) > 1e-6f)) continue;
+            const float predicted = next == y * width + x + 1 ? f.depth.ddx : f.depth.ddy;
+            ++pairs;
+            // The slopes are stored to 2^-12 of the larger one (encode_slopes).
+            const float stored = std::ldexp(std::max(std::abs(f.depth.ddx), std::abs(f.depth.ddy)), -11);
+            wrong += std::abs(predicted - step) > 0.05f * std::abs(step) + stored;
+          }
+  EXPECT_GT(pairs, 1000);
+  EXPECT_EQ(wrong, 0) << "of " << pairs << " neighbouring fragments of one triangle";
+}
+
 TEST_F(CoverageGl, DynamicCoverageEqualsItsCpuReferenceOnTheSameFragments) {
   for (const char* rules : {"surface", "seed"})
     for (const char* scene : {"builtin:default", "builtin:interpenetrating", "builtin:star"}) {
