@@ -65,6 +65,8 @@ uniform bool u_per_sample_visibility;  // DcaaSettings::per_sample_visibility
 uniform bool u_merge_hidden;           // DcaaSettings::merge_hidden
 uniform bool u_merge_disjoint_only;    // DcaaSettings::merge_disjoint_only
 uniform bool u_second_merge_into_all;  // DcaaSettings::second_merge_into_all
+uniform bool u_second_merge_by_visible;  // DcaaSettings::second_merge_by_visible
+uniform float u_merge_colour_tolerance;  // DcaaSettings::merge_colour_tolerance (0: no colour test)
 uniform int u_coverage_sample_count;
 uniform vec2 u_coverage_samples[64];  // pixel space, y down
 #ifndef DCAA_MAX_SURFACES
@@ -106,21 +108,37 @@ void make_shaded(int i) {
 void make_shaded(int i) {}
 #endif
 
-// merge_surfaces() of core/reference/dcaa.cpp, into slot i from slot j (both shaded or neither).
-void merge_into(int i, int j) {
+// merge_surfaces() of core/reference/dcaa.cpp, into slot i from slot j (both shaded or neither):
+// the geometry (depth plane, facet normal) weighted by the samples each covers, what is seen
+// (colour or albedo, shading normal) by sa : sb (both 0: equally).
+void merge_into_weighted(int i, int j, float sa, float sb) {
   float wa = float(bits(s_coverage[i])), wb = float(bits(s_coverage[j]));
   float ka = wa + wb > 0.0 ? wa / (wa + wb) : 0.5, kb = 1.0 - ka;
+  float ca = sa + sb > 0.0 ? sa / (sa + sb) : 0.5, cb = 1.0 - ca;
   vec3 n = ka * s_normal[i] + kb * s_normal[j];
   float len = length(n);
   s_normal[i] = len > 1e-6 ? n / len : (wa >= wb ? s_normal[i] : s_normal[j]);
 #ifdef DCAA_SHADE_SURFACES
-  vec3 m = ka * s_shading_normal[i] + kb * s_shading_normal[j];
+  vec3 m = ca * s_shading_normal[i] + cb * s_shading_normal[j];
   float m_len = length(m);
-  s_shading_normal[i] = m_len > 1e-6 ? m / m_len : (wa >= wb ? s_shading_normal[i] : s_shading_normal[j]);
+  s_shading_normal[i] = m_len > 1e-6 ? m / m_len : (sa >= sb ? s_shading_normal[i] : s_shading_normal[j]);
 #endif
   s_coverage[i] |= s_coverage[j];
   s_depth[i] = ka * s_depth[i] + kb * s_depth[j];
-  s_colour[i] = ka * s_colour[i] + kb * s_colour[j];
+  s_colour[i] = ca * s_colour[i] + cb * s_colour[j];
+}
+// Everything weighted by the samples each covers.
+void merge_into(int i, int j) { merge_into_weighted(i, j, float(bits(s_coverage[i])), float(bits(s_coverage[j]))); }
+
+// colours_differ() of core/reference/dcaa.cpp: slots both shaded compare colours, both unshaded
+// their albedos (s_colour holds either).
+bool colours_differ(int i, int j) {
+  if (!(u_merge_colour_tolerance > 0.0)) return false;
+#ifdef DCAA_SHADE_SURFACES
+  if (is_shaded(i) != is_shaded(j)) return false;
+#endif
+  vec3 d = abs(sqrt(max(s_colour[i], vec3(0.0))) - sqrt(max(s_colour[j], vec3(0.0))));
+  return any(greaterThan(d, vec3(u_merge_colour_tolerance)));
 }
 
 void copy_slot(int to, int from) {
@@ -173,6 +191,7 @@ void insert_fragment(CoverageRecord r) {
     float d = dot(s_normal[i], s_normal[in_slot]);
     if (!(d > u_cos_normal_threshold) || !overlaps(s_depth[i], s_depth[in_slot])) continue;
     if (u_merge_disjoint_only && any(notEqual(s_coverage[i] & s_coverage[in_slot], uvec2(0u)))) continue;
+    if (colours_differ(i, in_slot)) continue;
     float ov = overlap_amount(s_depth[i], s_depth[in_slot]);
     if (best < 0 || d > best_dot || (d == best_dot && ov > best_overlap)) {
       best = i;
@@ -216,8 +235,8 @@ void insert_fragment(CoverageRecord r) {
       smallest_visible = visible;
     }
   }
+  int counts[MAX_SURFACES + 1];
   if (u_per_sample_visibility) {
-    int counts[MAX_SURFACES + 1];
     front_counts(n, counts);
     smallest = -1;
     for (int k = n - 1; k >= 0; --k) {  // back to front: ties go to the farther
@@ -246,7 +265,10 @@ void insert_fragment(CoverageRecord r) {
   if (target >= 0 && !u_second_merge_into_all) {
     make_shaded(target);
     make_shaded(smallest);
-    merge_into(target, smallest);
+    if (u_second_merge_by_visible && u_per_sample_visibility)
+      merge_into_weighted(target, smallest, float(counts[target]), float(counts[smallest]));
+    else
+      merge_into(target, smallest);
   }
   for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);  // remove it, keep the order
 }

@@ -36,6 +36,18 @@ std::vector<int> front_counts(const std::vector<DcaaSurface>& surfaces, const Sa
   return counts;
 }
 
+// The colour test of the first merge: surfaces both shaded compare colours, both unshaded their
+// albedos; a shaded and an unshaded one are not compared.
+bool colours_differ(const DcaaSurface& a, const DcaaSurface& b, float tolerance) {
+  if (!(tolerance > 0.0f) || a.shaded != b.shaded) return false;
+  const Rgb& x = a.shaded ? a.colour : a.albedo;
+  const Rgb& y = b.shaded ? b.colour : b.albedo;
+  const auto apart = [tolerance](float u, float v) {
+    return std::abs(std::sqrt(std::max(u, 0.0f)) - std::sqrt(std::max(v, 0.0f))) > tolerance;
+  };
+  return apart(x.r, y.r) || apart(x.g, y.g) || apart(x.b, y.b);
+}
+
 // ka a + kb b renormalised; opposite normals average to nothing: then the heavier one's.
 Normal3 weighted_normal(Normal3 a, Normal3 b, float ka, float kb, bool a_heavier) {
   const Normal3 n{ka * a.x + kb * b.x, ka * a.y + kb * b.y, ka * a.z + kb * b.z};
@@ -61,21 +73,28 @@ DcaaSettings dcaa_settings(const std::string& rules) {
   // Into the most overlapping surface only: measured +0.1 dB on the engine, +0.4 on distant boxes,
   // equal elsewhere, against into every overlapping one.
   s.second_merge_into_all = false;
+  s.merge_colour_tolerance = kMergeColourToleranceDefault;
+  s.second_merge_by_visible = true;
   return s;
 }
 
 DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b) {
+  return merge_surfaces(a, b, float(similar_count(a.coverage)), float(similar_count(b.coverage)));
+}
+
+DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b, float seen_a, float seen_b) {
   const float wa = float(similar_count(a.coverage)), wb = float(similar_count(b.coverage));
-  const float sum = wa + wb;
-  const float ka = sum > 0.0f ? wa / sum : 0.5f, kb = 1.0f - ka;
+  const float sum = wa + wb, seen = seen_a + seen_b;
+  const float ka = sum > 0.0f ? wa / sum : 0.5f, kb = 1.0f - ka;        // geometry
+  const float ca = seen > 0.0f ? seen_a / seen : 0.5f, cb = 1.0f - ca;  // what is seen
   DcaaSurface m;
   m.coverage = a.coverage | b.coverage;
   m.depth = {ka * a.depth.at_centre + kb * b.depth.at_centre, ka * a.depth.ddx + kb * b.depth.ddx,
              ka * a.depth.ddy + kb * b.depth.ddy};
   m.normal = weighted_normal(a.normal, b.normal, ka, kb, wa >= wb);
-  m.shading_normal = weighted_normal(a.shading_normal, b.shading_normal, ka, kb, wa >= wb);
-  m.colour = {ka * a.colour.r + kb * b.colour.r, ka * a.colour.g + kb * b.colour.g, ka * a.colour.b + kb * b.colour.b};
-  m.albedo = {ka * a.albedo.r + kb * b.albedo.r, ka * a.albedo.g + kb * b.albedo.g, ka * a.albedo.b + kb * b.albedo.b};
+  m.shading_normal = weighted_normal(a.shading_normal, b.shading_normal, ca, cb, seen_a >= seen_b);
+  m.colour = {ca * a.colour.r + cb * b.colour.r, ca * a.colour.g + cb * b.colour.g, ca * a.colour.b + cb * b.colour.b};
+  m.albedo = {ca * a.albedo.r + cb * b.albedo.r, ca * a.albedo.g + cb * b.albedo.g, ca * a.albedo.b + cb * b.albedo.b};
   m.shaded = a.shaded && b.shaded;
   return m;
 }
@@ -100,6 +119,7 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
     const float d = dot(surfaces_[i].normal, in.normal);
     if (!(d > settings_.cos_normal_threshold) || !depth_intervals_overlap(surfaces_[i].depth, in.depth)) continue;
     if (settings_.merge_disjoint_only && (surfaces_[i].coverage & in.coverage)) continue;
+    if (colours_differ(surfaces_[i], in, settings_.merge_colour_tolerance)) continue;
     const float overlap = depth_overlap_amount(surfaces_[i].depth, in.depth);
     if (best < 0 || d > best_dot || (d == best_dot && overlap > best_overlap)) best = i, best_dot = d, best_overlap = overlap;
   }
@@ -134,8 +154,9 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
     closer |= candidates[i].coverage;
     if (k > 0 && (smallest < 0 || visible <= smallest_visible)) smallest = i, smallest_visible = visible;
   }
+  std::vector<int> counts;
   if (settings_.per_sample_visibility) {
-    const std::vector<int> counts = front_counts(candidates, *pattern_);
+    counts = front_counts(candidates, *pattern_);
     smallest = -1;
     for (int k = n - 1; k >= 0; --k) {  // back to front: ties go to the farther
       const int i = front_to_back[k];
@@ -154,8 +175,12 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
       target = i, target_overlap = overlap;
     }
   }
-  if (target >= 0 && !settings_.second_merge_into_all)
-    candidates[target] = merge_surfaces(shaded(candidates[target]), shaded(candidates[smallest]));
+  if (target >= 0 && !settings_.second_merge_into_all) {
+    const DcaaSurface into = shaded(candidates[target]), from = shaded(candidates[smallest]);
+    candidates[target] = settings_.second_merge_by_visible && !counts.empty()
+                             ? merge_surfaces(into, from, float(counts[target]), float(counts[smallest]))
+                             : merge_surfaces(into, from);
+  }
   surfaces_.clear();
   for (int i = 0; i < n; ++i)
     if (i != smallest) surfaces_.push_back(candidates[i]);

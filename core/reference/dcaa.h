@@ -14,6 +14,9 @@
 
 namespace rsaa {
 
+// The surface rules' colour tolerance of the first merge (DcaaSettings::merge_colour_tolerance).
+constexpr float kMergeColourToleranceDefault = 0.06f;
+
 struct DcaaSettings {
   int max_surfaces = 4;
   float cos_normal_threshold = 0.98078528f;  // cos(pi / 16), the paper's aligned-normal rule
@@ -33,6 +36,20 @@ struct DcaaSettings {
   // Second merge into every surface whose depth interval overlaps the least visible one, as
   // Algorithm 1 writes it (true), or only into the one that overlaps it most (false).
   bool second_merge_into_all = true;
+  // Second merge: the colour (or albedo and shading normal) weighted by the samples each of the two
+  // surfaces shows (per-sample visibility among the surfaces and the fragment) instead of the
+  // samples it covers, so a surface mostly hidden behind the one it goes into (the floor behind a
+  // fin) gives its colour only where it is seen; the depth plane and facet normal stay weighted by
+  // coverage (the merged surface covers both: by what is seen, its plane extrapolated over the
+  // hidden one's samples came in front of later fragments: -1.1 dB on the distant scene).
+  // false: everything by coverage, as the first merge and the paper's Merge().
+  bool second_merge_by_visible = false;
+  // First merge only between fragments whose colours (albedos, shading surfaces) differ by at most
+  // this much in any channel on a square-root scale (0: no colour test, the paper). Fragments are
+  // shaded at the same pixel centre, so the triangles of one surface agree closely; coplanar parts
+  // of different materials (a wall's dark plinth flush with a pale slab) do not, and merged they
+  // give one colour to samples where only one of them is visible.
+  float merge_colour_tolerance = 0.0f;
 };
 
 struct DcaaSurface {
@@ -68,6 +85,9 @@ DcaaSettings dcaa_settings(const std::string& rules);
 // shading normal) averaged weighted by coverage counts (normals renormalised), coverage ORed.
 // Returns the merged surface.
 DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b);
+// The same with the colour, albedo and shading normal weighted seen_a : seen_b (both 0: equally),
+// the geometry still by coverage.
+DcaaSurface merge_surfaces(const DcaaSurface& a, const DcaaSurface& b, float seen_a, float seen_b);
 
 // What insert() did with a fragment, for tests and statistics.
 enum class DcaaEvent { Ignored, Merged, Stored, SecondMerge, Discarded };

@@ -19,6 +19,8 @@ void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const Dca
   glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_hidden"), settings.merge_hidden);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_merge_disjoint_only"), settings.merge_disjoint_only);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_into_all"), settings.second_merge_into_all);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_by_visible"), settings.second_merge_by_visible);
+  glProgramUniform1f(p, glGetUniformLocation(p, "u_merge_colour_tolerance"), settings.merge_colour_tolerance);
 }
 
 bool dcaa_shade_surfaces(const std::string& shade) {
