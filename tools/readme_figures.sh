@@ -209,6 +209,14 @@ bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals" $models/3DS
   $models/Collada/duck.dae $models/IFC/AC14-FZK-Haus.ifc $models/Q3D/E-AT-AT.q3o $models/MS3D/jeep1.ms3d \
   $models/COB/dwarf.cob $models/BLEND/SuzanneSubdiv_252.blend $models/IQM/mrfixit.iqm \
   $models/X3D/ComputerKeyboard.x3d >"$out/coverage-goals.md"
+# The same goals on the bench's scenes (the coverage family's *Quality* table) and the scale test
+# on the default scene and the three bench models (the "bench:" rows of the scale table).
+step "coverage goals on the bench scenes" coverage-goals-bench.md
+{ bash tools/coverage_goals.sh --out-dir "$out/coverage-goals-bench" builtin:default builtin:distant builtin:edges \
+    builtin:fence builtin:interpenetrating builtin:star builtin:grazing builtin:coplanar "$engine" "$truck" \
+    $models/OBJ/spider.obj
+  bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals-bench-scale" builtin:default "$engine" "$truck" \
+    $models/OBJ/spider.obj; } >"$out/coverage-goals-bench.md"
 mkdir -p "$out/scene-tables"
 for scene in builtin:default "$engine"; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}
