@@ -194,12 +194,12 @@ TEST_F(MsaaPrePass, SameMasksAsJitteredOnADetailedModel) {
 }
 
 // 8 subsamples on a 4-sample driver: the union pattern (tables/custom-gl4x-union.json, the
-// driver's 4 positions and the same shifted by (-1/8, -1/8) px, wrapped into the pixel) as two 4x
+// driver's 4 positions and the same shifted by (1/2, 1/2) px, wrapped into the pixel) as two 4x
 // multisample draws, the second shifted; its masks against the jittered pre-pass (8 draws) with
 // the same table. The image's outermost pixels are left out: the shifted draw has no samples
 // beyond the image, so their wrapped subsamples count as similar. Where the masks differ
-// (measured at 320x240: 5 of 75,684 pixels on builtin:default, 0 on edges, 1 on coplanar with
-// material edges; with the earlier (1/2, 1/2) shift 2, 1 and 2), the two
+// (measured at 320x240: 2 of 75,684 pixels on builtin:default, 1 on edges, 2 on coplanar with
+// material edges; with the (-1/8, -1/8) shift 5, 0 and 1), the two
 // pre-passes saw another triangle (or none) at a union subsample: the shifted 4x draw and the
 // jittered draw put the sample at different sub-pixel positions of the rasterizer's snapped
 // grid, and a triangle edge within that snapping of the sample decides. Tolerance: 12 pixels.

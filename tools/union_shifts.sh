@@ -3,7 +3,7 @@
 # the second shifted and wrapped into the pixel)? For each candidate shift: train the union table
 # (1e6 cases), its line-case RMS on fresh cases (rsaa eval-table), and RSAA's PSNR against 64x
 # SSAA on each scene with that table and the two-draw pre-pass, beside d3d8x's 8 jittered draws.
-# Line-case RMS and images rank the shifts differently; tables/custom-gl4x-union.json is the shift
+# Line-case RMS and images need not rank the shifts alike; tables/custom-gl4x-union.json is the shift
 # the images prefer. Writes OUT_DIR/union-shifts.md (a Markdown table) and the renders.
 # Usage: tools/union_shifts.sh [--width W] [--height H] [--shifts "dx,dy ..."] [--scene S]... [OUT_DIR]
 #   Default: 640x480, shifts "0.5,0.5 -0.125,-0.125 0.125,0.125 0.5,0 -0.25,0", eight scenes
