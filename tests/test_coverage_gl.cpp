@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include <cmath>
+#include <utility>
 
 #include "core/reference/dcaa.h"
 #include "core/reference/dynamic_coverage.h"
@@ -83,6 +84,17 @@ Rendered render_both(const std::string& technique, const std::string& scene_name
   return render_both(technique, load_scene(scene_name), width, height, rules, shade);
 }
 
+// One draw of every triangle, seen from (0, 0, 3) along -z: the hand-made scenes below.
+Scene with_one_draw_seen_from_the_front(Scene s) {
+  s.draws = {{0, std::uint32_t(s.indices.size()), -1}};
+  Camera camera;
+  camera.eye = {0.0f, 0.0f, 3.0f};
+  camera.near_plane = 1.0f;
+  camera.far_plane = 5.0f;
+  s.camera = camera;
+  return s;
+}
+
 // `count` triangles stacked front to back, each turned about the view axis (their edges cross
 // the pixels at every angle) and tilted a little (some merge, some do not), each its own
 // colour: the pixels near the centre get a fragment of every triangle.
@@ -106,13 +118,7 @@ Scene stacked_triangles(int count) {
       s.vertices.push_back(v);
     }
   }
-  s.draws = {{0, std::uint32_t(s.indices.size()), -1}};
-  Camera camera;
-  camera.eye = {0.0f, 0.0f, 3.0f};
-  camera.near_plane = 1.0f;
-  camera.far_plane = 5.0f;
-  s.camera = camera;
-  return s;
+  return with_one_draw_seen_from_the_front(std::move(s));
 }
 
 TEST_F(CoverageGl, DcaaEqualsItsCpuReferenceOnTheSameFragments) {
@@ -209,13 +215,7 @@ Scene folded_planes() {
   quad(-1.0f, 0.0123f, 0.3f, pale);   // behind it
   quad(0.0123f, 1.0f, 0.3f, dark);    // in front where x > f
   quad(0.0123f, 1.0f, -0.3f, pale);   // behind it
-  s.draws = {{0, std::uint32_t(s.indices.size()), -1}};
-  Camera camera;
-  camera.eye = {0.0f, 0.0f, 3.0f};
-  camera.near_plane = 1.0f;
-  camera.far_plane = 5.0f;
-  s.camera = camera;
-  return s;
+  return with_one_draw_seen_from_the_front(std::move(s));
 }
 
 // The colour test of the first merge on GL: equal to the CPU reference, and what it changes
