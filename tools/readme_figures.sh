@@ -195,12 +195,12 @@ bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges
 bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
   noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
 # The same goals on 13 more held-out models (a sweep of other formats after the shading fix).
+more_models=($models/FBX/cubes_with_mirroring_and_pivot.fbx $models/STL/3DSMaxExport.STL
+  $models/LWO/LWO2/hierarchy_smoothed.lwo $models/AC/SphereWithLight.ac $models/MD2/faerie.md2
+  $models/X/BCN_Epileptic.X $models/Ogre/TheThing/Mesh.mesh.xml $models/HMP/terrain.hmp $models/SIB/heffalump.sib
+  $models/SMD/holy_grailref.smd $models/NFF/NFF/spheres.nff $models/3MF/box.3mf $models/XGL/sample_official.xgl)
 step "RSAA's goals on 13 more held-out models" rsaa-goals-more.md
-bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" $models/FBX/cubes_with_mirroring_and_pivot.fbx \
-  $models/STL/3DSMaxExport.STL $models/LWO/LWO2/hierarchy_smoothed.lwo $models/AC/SphereWithLight.ac \
-  $models/MD2/faerie.md2 $models/X/BCN_Epileptic.X $models/Ogre/TheThing/Mesh.mesh.xml $models/HMP/terrain.hmp \
-  $models/SIB/heffalump.sib $models/SMD/holy_grailref.smd $models/NFF/NFF/spheres.nff $models/3MF/box.3mf \
-  $models/XGL/sample_official.xgl >"$out/rsaa-goals-more.md"
+bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" "${more_models[@]}" >"$out/rsaa-goals-more.md"
 cost_steps
 papers_figures
 # The coverage family's goals and the scale test on held-out models (issue 14; about 16 minutes).
@@ -211,11 +211,7 @@ bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals" $models/3DS
   $models/X3D/ComputerKeyboard.x3d >"$out/coverage-goals.md"
 # The same goals on the 13 more held-out models of RSAA's goals (no scale test; about 3 minutes).
 step "coverage goals on 13 more held-out models" coverage-goals-more.md
-bash tools/coverage_goals.sh --out-dir "$out/coverage-goals-more" $models/FBX/cubes_with_mirroring_and_pivot.fbx \
-  $models/STL/3DSMaxExport.STL $models/LWO/LWO2/hierarchy_smoothed.lwo $models/AC/SphereWithLight.ac \
-  $models/MD2/faerie.md2 $models/X/BCN_Epileptic.X $models/Ogre/TheThing/Mesh.mesh.xml $models/HMP/terrain.hmp \
-  $models/SIB/heffalump.sib $models/SMD/holy_grailref.smd $models/NFF/NFF/spheres.nff $models/3MF/box.3mf \
-  $models/XGL/sample_official.xgl >"$out/coverage-goals-more.md"
+bash tools/coverage_goals.sh --out-dir "$out/coverage-goals-more" "${more_models[@]}" >"$out/coverage-goals-more.md"
 # The same goals on the bench's scenes (the coverage family's *Quality* table) and the scale test
 # on the default scene and the three bench models (the "bench:" rows of the scale table).
 step "coverage goals on the bench scenes" coverage-goals-bench.md
