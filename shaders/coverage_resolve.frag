@@ -67,6 +67,7 @@ uniform bool u_merge_disjoint_only;    // DcaaSettings::merge_disjoint_only
 uniform bool u_second_merge_into_all;  // DcaaSettings::second_merge_into_all
 uniform bool u_second_merge_by_visible;  // DcaaSettings::second_merge_by_visible
 uniform float u_merge_colour_tolerance;  // DcaaSettings::merge_colour_tolerance (0: no colour test)
+uniform bool u_second_merge_least_change;  // DcaaSettings::second_merge_least_change
 uniform int u_coverage_sample_count;
 uniform vec2 u_coverage_samples[64];  // pixel space, y down
 #ifndef DCAA_MAX_SURFACES
@@ -139,6 +140,12 @@ bool colours_differ(int i, int j) {
 #endif
   vec3 d = abs(sqrt(max(s_colour[i], vec3(0.0))) - sqrt(max(s_colour[j], vec3(0.0))));
   return any(greaterThan(d, vec3(u_merge_colour_tolerance)));
+}
+// colour_difference() of core/reference/dcaa.cpp: the largest channel difference on a
+// square-root scale.
+float colour_difference(int i, int j) {
+  vec3 d = abs(sqrt(max(s_colour[i], vec3(0.0))) - sqrt(max(s_colour[j], vec3(0.0))));
+  return max(d.r, max(d.g, d.b));
 }
 
 void copy_slot(int to, int from) {
@@ -246,6 +253,30 @@ void insert_fragment(CoverageRecord r) {
         smallest_visible = counts[i];
       }
     }
+  }
+  if (u_second_merge_least_change && u_per_sample_visibility) {
+    // least_change() of core/reference/dcaa.cpp: the drop or merge that changes the colours of
+    // the samples shown least (dropping the least visible costs its samples).
+    int into = -1;
+    float best_cost = float(smallest_visible);
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        if (!overlaps(s_depth[i], s_depth[j])) continue;
+        float si = float(counts[i]), sj = float(counts[j]);
+        float cost = si + sj > 0.0 ? 2.0 * si * sj / (si + sj) * colour_difference(i, j) : 0.0;
+        if (cost < best_cost) {
+          smallest = j;
+          into = i;
+          best_cost = cost;
+        }
+      }
+    if (into >= 0) {
+      make_shaded(into);
+      make_shaded(smallest);
+      merge_into_weighted(into, smallest, float(counts[into]), float(counts[smallest]));
+    }
+    for (int i = smallest; i < n - 1; ++i) copy_slot(i, i + 1);
+    return;
   }
   int target = -1;
   float target_overlap = 0.0;

@@ -251,6 +251,10 @@ TEST(Dcaa, CoplanarPartsOfDifferentColoursStayApart) {
 TEST(Dcaa, SecondMergeWeightsBySamplesShown) {
   const SamplePattern& pattern = dynamic_coverage_pattern();
   const Rgb dark{0.1f, 0.1f, 0.1f}, floor_colour{0.8f, 0.8f, 0.8f}, third{0.4f, 0.4f, 0.4f};
+  // DCAA's rule for full slots (the least visible goes into the most overlapping surface); dynamic
+  // coverage's least-change rule weights its merges by samples shown too.
+  DcaaSettings least_visible = dynamic_coverage_surface_settings();
+  least_visible.second_merge_least_change = false;
   const auto resolve = [&](const DcaaSettings& settings) {
     DcaaPixel pixel(settings, &pattern);
     pixel.insert(fragment(0, 0x0FFF, 0.300f, 0.0f, dark, 0.02f));
@@ -259,8 +263,9 @@ TEST(Dcaa, SecondMergeWeightsBySamplesShown) {
     return pixel.resolve(pattern, {0, 0, 0});
   };
   const float exact = (12 * 0.1f + 2 * 0.8f + 2 * 0.4f) / 16;
+  EXPECT_NEAR(resolve(least_visible).r, exact, 1e-5f);
   EXPECT_NEAR(resolve(dynamic_coverage_surface_settings()).r, exact, 1e-5f);
-  DcaaSettings by_coverage = dynamic_coverage_surface_settings();
+  DcaaSettings by_coverage = least_visible;
   by_coverage.second_merge_by_visible = false;
   EXPECT_GT(resolve(by_coverage).r, exact + 0.2f);
 }
@@ -463,11 +468,43 @@ TEST(DynamicCoverageSurface, AHiddenFragmentDrawnFirstGivesWayAndACreaseMergesIn
   EXPECT_FLOAT_EQ(p.resolve().b, 0.0f);
   EXPECT_FLOAT_EQ(p.resolve().r, 0.5f);
   EXPECT_FLOAT_EQ(p.resolve().g, 0.25f);
-  // A third facet of the crease (its own normal) covering 2 more samples: merged into the
-  // overlapping facet instead of dropped, so its samples stay covered (no background dot).
-  p.insert(fragment(3, 0x3000, 0.2f, -0.6f, {1, 1, 1}, 0.02f));
+  // A third facet of the crease (its own normal, nearly the red facet's colour) covering 2 more
+  // samples: merged into the red one instead of dropped, so its samples stay covered (no
+  // background dot).
+  p.insert(fragment(3, 0x3000, 0.2f, -0.6f, {0.9f, 0.05f, 0}, 0.02f));
   ASSERT_EQ(p.surfaces().size(), 2u);
   EXPECT_EQ(p.surfaces()[0].coverage | p.surfaces()[1].coverage, 0x3FFFu);
+  EXPECT_EQ(p.surfaces()[0].coverage, 0x30FFu);
+  // A fourth of another colour altogether (white next to red and green): merged, it would change
+  // the colour of every sample of its partner; dropped, only its own 2 samples (the background).
+  p.insert(fragment(4, 0xC000, 0.2f, 0.3f, {1, 1, 1}, 0.02f));
+  EXPECT_EQ(p.surfaces()[0].coverage | p.surfaces()[1].coverage, 0x3FFFu);
+}
+
+// The least-change rule (DcaaSettings::second_merge_least_change, dynamic coverage's default),
+// found on a character model (X/BCN_Epileptic.X): the far side of a limb, two facets whose normals
+// differ beyond the first merge's cone, fills both slots around the front surface's first small
+// fragment. Removing the least visible candidate dropped that fragment (3 samples shown against
+// 6 and 7), and its samples showed the far side; merging the two far facets changes no colour,
+// so the front keeps its slot and its later fragments merge into it.
+TEST(DynamicCoverageSurface, TwoFacetsOfOneHiddenSurfaceShareASlotRatherThanPushOutTheFront) {
+  const Rgb black{0, 0, 0}, front{0.06f, 0.06f, 0.06f}, back{0.42f, 0.42f, 0.42f};
+  const auto resolve = [&](const DcaaSettings& settings) {
+    DcaaPixel pixel(settings, &dynamic_coverage_pattern());
+    pixel.insert(fragment(0, 0x0007, 0.30f, 0.00f, front, 0.002f));  // front, 3 samples
+    pixel.insert(fragment(1, 0x00FF, 0.50f, 0.20f, back, 0.002f));   // far side, facet 1
+    pixel.insert(fragment(2, 0xFF00, 0.50f, -0.20f, back, 0.002f));  // far side, facet 2 (23 deg)
+    pixel.insert(fragment(3, 0xFFF8, 0.30f, 0.05f, front, 0.002f));  // the rest of the front
+    return pixel.resolve(dynamic_coverage_pattern(), black);
+  };
+  EXPECT_NEAR(resolve(dynamic_coverage_surface_settings()).r, front.r, 1e-6f);
+  DcaaSettings least_visible = dynamic_coverage_surface_settings();
+  least_visible.second_merge_least_change = false;
+  EXPECT_NEAR(resolve(least_visible).r, (13 * front.r + 3 * back.r) / 16, 1e-6f);
+  // The rule needs per-sample visibility.
+  DcaaSettings coarse = least_visible;
+  coarse.per_sample_visibility = false, coarse.second_merge_least_change = true;
+  EXPECT_THROW(DcaaPixel(coarse, &dynamic_coverage_pattern()), std::invalid_argument);
 }
 
 TEST(DynamicCoverageSurface, ZeroCoverageNonFiniteAndEmpty) {

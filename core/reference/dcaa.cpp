@@ -55,12 +55,43 @@ Normal3 weighted_normal(Normal3 a, Normal3 b, float ka, float kb, bool a_heavier
   return len > 1e-6f ? Normal3{n.x / len, n.y / len, n.z / len} : (a_heavier ? a : b);
 }
 
+// The colour difference of the least-change second merge: the largest channel difference on a
+// square-root scale (that of colours_differ()). Surfaces not shaded yet compare albedos.
+float colour_difference(const DcaaSurface& a, const DcaaSurface& b) {
+  const Rgb& x = a.shaded ? a.colour : a.albedo;
+  const Rgb& y = b.shaded ? b.colour : b.albedo;
+  const auto d = [](float u, float v) { return std::abs(std::sqrt(std::max(u, 0.0f)) - std::sqrt(std::max(v, 0.0f))); };
+  return std::max({d(x.r, y.r), d(x.g, y.g), d(x.b, y.b)});
+}
+
+// DcaaSettings::second_merge_least_change: which candidate goes (`removed`) and the one it is
+// merged into (`into`, -1: dropped). Dropping `least_visible` (the candidate showing the fewest
+// samples, `shown` from front_counts()) costs those samples; a merge must cost less.
+struct LeastChange {
+  int removed = -1, into = -1;
+};
+LeastChange least_change(const std::vector<DcaaSurface>& candidates, const std::vector<int>& shown, int least_visible) {
+  const int n = int(candidates.size());
+  LeastChange best{least_visible, -1};
+  float best_cost = float(shown[least_visible]);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      if (!depth_intervals_overlap(candidates[i].depth, candidates[j].depth)) continue;
+      const float si = float(shown[i]), sj = float(shown[j]);
+      const float cost = si + sj > 0.0f ? 2.0f * si * sj / (si + sj) * colour_difference(candidates[i], candidates[j]) : 0.0f;
+      if (cost < best_cost) best = {j, i}, best_cost = cost;  // the later into the earlier slot
+    }
+  return best;
+}
+
 }  // namespace
 
 DcaaPixel::DcaaPixel(DcaaSettings settings, const SamplePattern* coverage_pattern, DcaaSurfaceShader shade)
     : settings_(settings), pattern_(coverage_pattern), shade_(std::move(shade)) {
   if (settings.per_sample_visibility && !coverage_pattern)
     throw std::invalid_argument("DcaaPixel: per-sample visibility needs the coverage pattern");
+  if (settings.second_merge_least_change && !settings.per_sample_visibility)
+    throw std::invalid_argument("DcaaPixel: the least-change second merge needs per-sample visibility");
 }
 
 DcaaSettings dcaa_settings(const std::string& rules) {
@@ -163,6 +194,19 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
       if (smallest < 0 || counts[i] < smallest_visible) smallest = i, smallest_visible = counts[i];
     }
   }
+  const auto keep_all_but = [&](int removed) {
+    surfaces_.clear();
+    for (int i = 0; i < n; ++i)
+      if (i != removed) surfaces_.push_back(candidates[i]);
+  };
+  if (settings_.second_merge_least_change) {
+    const LeastChange change = least_change(candidates, counts, smallest);
+    const int into = change.into, from = change.removed;
+    if (into >= 0)
+      candidates[into] = merge_surfaces(shaded(candidates[into]), shaded(candidates[from]), float(counts[into]), float(counts[from]));
+    keep_all_but(from);
+    return into >= 0 ? DcaaEvent::SecondMerge : DcaaEvent::Discarded;
+  }
   int target = -1;
   float target_overlap = 0.0f;
   for (int i = 0; i < n && (settings_.merge_hidden || smallest_visible > 0); ++i) {
@@ -181,9 +225,7 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
                              ? merge_surfaces(into, from, float(counts[target]), float(counts[smallest]))
                              : merge_surfaces(into, from);
   }
-  surfaces_.clear();
-  for (int i = 0; i < n; ++i)
-    if (i != smallest) surfaces_.push_back(candidates[i]);
+  keep_all_but(smallest);
   return target >= 0 ? DcaaEvent::SecondMerge : DcaaEvent::Discarded;
 }
 

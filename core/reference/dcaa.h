@@ -50,6 +50,16 @@ struct DcaaSettings {
   // of different materials (a wall's dark plinth flush with a pale slab) do not, and merged they
   // give one colour to samples where only one of them is visible.
   float merge_colour_tolerance = 0.0f;
+  // Slots full (needs per_sample_visibility): instead of removing the least visible candidate
+  // (merged into the most overlapping surface, or dropped), take the drop or merge that changes
+  // the colours of the samples shown least. Dropping a candidate costs each sample it shows (what
+  // shows there instead is not known yet: later fragments may cover it); merging two whose depth
+  // intervals overlap costs 2 s_a s_b / (s_a + s_b) times their colour difference (the largest
+  // channel difference on a square-root scale): the change of the shown samples' colours when
+  // the merged colour is weighted by samples shown (second_merge_by_visible). Two facets of one
+  // curved surface, whose normals differ beyond the first merge's cone, then share a slot rather
+  // than push out the nearer surface's first small fragment. Ties: a drop, the farther first.
+  bool second_merge_least_change = false;
 };
 
 struct DcaaSurface {

@@ -21,6 +21,7 @@ void configure_surface_resolve(GLuint p, const SamplePattern& pattern, const Dca
   glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_into_all"), settings.second_merge_into_all);
   glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_by_visible"), settings.second_merge_by_visible);
   glProgramUniform1f(p, glGetUniformLocation(p, "u_merge_colour_tolerance"), settings.merge_colour_tolerance);
+  glProgramUniform1i(p, glGetUniformLocation(p, "u_second_merge_least_change"), settings.second_merge_least_change);
 }
 
 bool dcaa_shade_surfaces(const std::string& shade) {
