@@ -258,16 +258,17 @@ void insert_fragment(CoverageRecord r) {
     // least_change() of core/reference/dcaa.cpp: the drop or merge that changes the colours of
     // the samples shown least (dropping the least visible costs its samples).
     int into = -1;
-    float best_cost = float(smallest_visible);
+    float best_cost = float(smallest_visible), best_per = 1.0;  // a fraction, as on the CPU
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j) {
         if (!overlaps(s_depth[i], s_depth[j])) continue;
         float si = float(counts[i]), sj = float(counts[j]);
-        float cost = si + sj > 0.0 ? 2.0 * si * sj / (si + sj) * colour_difference(i, j) : 0.0;
-        if (cost < best_cost) {
+        float cost = 2.0 * si * sj * colour_difference(i, j), per = max(si + sj, 1.0);
+        if (cost * best_per < best_cost * per) {
           smallest = j;
           into = i;
           best_cost = cost;
+          best_per = per;
         }
       }
     if (into >= 0) {

@@ -475,10 +475,6 @@ TEST(DynamicCoverageSurface, AHiddenFragmentDrawnFirstGivesWayAndACreaseMergesIn
   ASSERT_EQ(p.surfaces().size(), 2u);
   EXPECT_EQ(p.surfaces()[0].coverage | p.surfaces()[1].coverage, 0x3FFFu);
   EXPECT_EQ(p.surfaces()[0].coverage, 0x30FFu);
-  // A fourth of another colour altogether (white next to red and green): merged, it would change
-  // the colour of every sample of its partner; dropped, only its own 2 samples (the background).
-  p.insert(fragment(4, 0xC000, 0.2f, 0.3f, {1, 1, 1}, 0.02f));
-  EXPECT_EQ(p.surfaces()[0].coverage | p.surfaces()[1].coverage, 0x3FFFu);
 }
 
 // The least-change rule (DcaaSettings::second_merge_least_change, dynamic coverage's default),

@@ -4,7 +4,7 @@
 # crops), the papers' figures, the coverage family's goals on held-out models, the
 # scene-specific tables and the reliability report. Logs go to
 # OUT_DIR/*.md; the pictures the README shows are copied to docs/images/.
-# Usage: tools/readme_figures.sh [--quick] [--only papers|cost|diagnosis] [OUT_DIR]
+# Usage: tools/readme_figures.sh [--quick] [--only papers|cost|diagnosis|coverage] [OUT_DIR]
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
 #   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
@@ -12,6 +12,7 @@
 #            multisample pre-pass and the union pattern, how cost grows, the bench; about 10
 #            minutes), to measure them again on a quiet machine.
 #   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
+#   --only coverage: just the coverage family's goals and scale tests (about 25 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -19,14 +20,14 @@ only=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --quick) quick=1; shift ;;
-    --only) only=${2:?--only needs a step: papers, cost or diagnosis}; shift 2 ;;
-    -h | --help) sed -n 2,13p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --only) only=${2:?--only needs a step: papers, cost, diagnosis or coverage}; shift 2 ;;
+    -h | --help) sed -n 2,15p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
-[[ -z $only || $only == papers || $only == cost || $only == diagnosis ]] ||
-  { echo "readme_figures.sh: --only $only: the steps run alone are: papers, cost, diagnosis" >&2; exit 2; }
-[[ $only != cost && $only != diagnosis || $quick == 0 ]] ||
+[[ -z $only || $only == papers || $only == cost || $only == diagnosis || $only == coverage ]] ||
+  { echo "readme_figures.sh: --only $only: the steps run alone are: papers, cost, diagnosis, coverage" >&2; exit 2; }
+[[ $only != cost && $only != diagnosis && $only != coverage || $quick == 0 ]] ||
   { echo "readme_figures.sh: --only $only has no --quick form" >&2; exit 2; }
 default_out=out/figures
 [[ $quick == 1 ]] && default_out=out/figures-quick
@@ -37,6 +38,13 @@ rsaa=./build/rsaa
 engine=/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb
 truck=/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf
 step() { echo "== $1 -> $out/$2" >&2; }
+models=/usr/share/assimp/models
+# 13 more held-out models for RSAA's and the coverage family's goals (a sweep of other formats after
+# the shading fix).
+more_models=($models/FBX/cubes_with_mirroring_and_pivot.fbx $models/STL/3DSMaxExport.STL
+  $models/LWO/LWO2/hierarchy_smoothed.lwo $models/AC/SphereWithLight.ac $models/MD2/faerie.md2
+  $models/X/BCN_Epileptic.X $models/Ogre/TheThing/Mesh.mesh.xml $models/HMP/terrain.hmp $models/SIB/heffalump.sib
+  $models/SMD/holy_grailref.smd $models/NFF/NFF/spheres.nff $models/3MF/box.3mf $models/XGL/sample_official.xgl)
 started=$SECONDS
 
 # The papers' figures (rsaa figures): RSAA's Figures 9 and 1, DCAA's and AGAA's sweeps, memory.
@@ -106,12 +114,32 @@ diagnosis_steps() {
         >"$out/diagnosis/$name-samples$samples.md"
     done
   done
-  local models=/usr/share/assimp/models
   for scene in $models/Q3D/E-AT-AT.q3o $models/3DS/fels.3ds $models/COB/dwarf.cob $models/IFC/AC14-FZK-Haus.ifc; do
     name=$(basename "$scene"); name=${name%.*}
     step "diagnosis, $name (held out), defaults" "diagnosis/$name-defaults.md"
     $rsaa diagnose --scene "$scene" --out-dir "$out/diagnosis/$name-defaults" >"$out/diagnosis/$name-defaults.md"
   done
+}
+# The coverage family's goals (issue 14): held-out models with the scale test (about 16 minutes),
+# 13 more (3 minutes), the bench scenes (the *Quality* table and the "bench:" scale rows).
+coverage_steps() {
+  # The coverage family's goals and the scale test on held-out models (issue 14; about 16 minutes).
+  step "coverage goals on held-out models" coverage-goals.md
+  bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals" $models/3DS/fels.3ds $models/OBJ/WusonOBJ.obj \
+    $models/Collada/duck.dae $models/IFC/AC14-FZK-Haus.ifc $models/Q3D/E-AT-AT.q3o $models/MS3D/jeep1.ms3d \
+    $models/COB/dwarf.cob $models/BLEND/SuzanneSubdiv_252.blend $models/IQM/mrfixit.iqm \
+    $models/X3D/ComputerKeyboard.x3d >"$out/coverage-goals.md"
+  # The same goals on the 13 more held-out models of RSAA's goals (no scale test; about 3 minutes).
+  step "coverage goals on 13 more held-out models" coverage-goals-more.md
+  bash tools/coverage_goals.sh --out-dir "$out/coverage-goals-more" "${more_models[@]}" >"$out/coverage-goals-more.md"
+  # The same goals on the bench's scenes (the coverage family's *Quality* table) and the scale test
+  # on the default scene and the three bench models (the "bench:" rows of the scale table).
+  step "coverage goals on the bench scenes" coverage-goals-bench.md
+  { bash tools/coverage_goals.sh --out-dir "$out/coverage-goals-bench" builtin:default builtin:distant builtin:edges \
+      builtin:fence builtin:interpenetrating builtin:star builtin:grazing builtin:coplanar "$engine" "$truck" \
+      $models/OBJ/spider.obj
+    bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals-bench-scale" builtin:default "$engine" "$truck" \
+      $models/OBJ/spider.obj; } >"$out/coverage-goals-bench.md"
 }
 if [[ $only == cost ]]; then
   cost_steps
@@ -121,6 +149,11 @@ fi
 if [[ $only == diagnosis ]]; then
   diagnosis_steps
   echo "the diagnosis steps done in $((SECONDS - started)) s" >&2
+  exit 0
+fi
+if [[ $only == coverage ]]; then
+  coverage_steps
+  echo "the coverage steps done in $((SECONDS - started)) s" >&2
   exit 0
 fi
 if [[ $only == papers ]]; then
@@ -183,7 +216,6 @@ $rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp
   --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"
 # RSAA's goals (issue 11) on the bench scenes, the coplanar scene and held-out models, with what the
 # latest default (material edges) changed; crops of the coplanar scene.
-models=/usr/share/assimp/models
 step "RSAA's goals, material edges off -> on" rsaa-goals.md
 bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges off" builtin:default \
   builtin:grazing builtin:edges builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar \
@@ -194,32 +226,11 @@ bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges
   >"$out/rsaa-goals.md"
 bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
   noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
-# The same goals on 13 more held-out models (a sweep of other formats after the shading fix).
-more_models=($models/FBX/cubes_with_mirroring_and_pivot.fbx $models/STL/3DSMaxExport.STL
-  $models/LWO/LWO2/hierarchy_smoothed.lwo $models/AC/SphereWithLight.ac $models/MD2/faerie.md2
-  $models/X/BCN_Epileptic.X $models/Ogre/TheThing/Mesh.mesh.xml $models/HMP/terrain.hmp $models/SIB/heffalump.sib
-  $models/SMD/holy_grailref.smd $models/NFF/NFF/spheres.nff $models/3MF/box.3mf $models/XGL/sample_official.xgl)
 step "RSAA's goals on 13 more held-out models" rsaa-goals-more.md
 bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" "${more_models[@]}" >"$out/rsaa-goals-more.md"
 cost_steps
 papers_figures
-# The coverage family's goals and the scale test on held-out models (issue 14; about 16 minutes).
-step "coverage goals on held-out models" coverage-goals.md
-bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals" $models/3DS/fels.3ds $models/OBJ/WusonOBJ.obj \
-  $models/Collada/duck.dae $models/IFC/AC14-FZK-Haus.ifc $models/Q3D/E-AT-AT.q3o $models/MS3D/jeep1.ms3d \
-  $models/COB/dwarf.cob $models/BLEND/SuzanneSubdiv_252.blend $models/IQM/mrfixit.iqm \
-  $models/X3D/ComputerKeyboard.x3d >"$out/coverage-goals.md"
-# The same goals on the 13 more held-out models of RSAA's goals (no scale test; about 3 minutes).
-step "coverage goals on 13 more held-out models" coverage-goals-more.md
-bash tools/coverage_goals.sh --out-dir "$out/coverage-goals-more" "${more_models[@]}" >"$out/coverage-goals-more.md"
-# The same goals on the bench's scenes (the coverage family's *Quality* table) and the scale test
-# on the default scene and the three bench models (the "bench:" rows of the scale table).
-step "coverage goals on the bench scenes" coverage-goals-bench.md
-{ bash tools/coverage_goals.sh --out-dir "$out/coverage-goals-bench" builtin:default builtin:distant builtin:edges \
-    builtin:fence builtin:interpenetrating builtin:star builtin:grazing builtin:coplanar "$engine" "$truck" \
-    $models/OBJ/spider.obj
-  bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals-bench-scale" builtin:default "$engine" "$truck" \
-    $models/OBJ/spider.obj; } >"$out/coverage-goals-bench.md"
+coverage_steps
 mkdir -p "$out/scene-tables"
 for scene in builtin:default "$engine"; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}

@@ -73,13 +73,15 @@ struct LeastChange {
 LeastChange least_change(const std::vector<DcaaSurface>& candidates, const std::vector<int>& shown, int least_visible) {
   const int n = int(candidates.size());
   LeastChange best{least_visible, -1};
-  float best_cost = float(shown[least_visible]);
+  // Costs as fractions (numerator, denominator), compared by cross-multiplying: no division, so
+  // the GL resolve, whose division need not round as the CPU's does, breaks exact ties alike.
+  float best_cost = float(shown[least_visible]), best_per = 1.0f;
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
       if (!depth_intervals_overlap(candidates[i].depth, candidates[j].depth)) continue;
       const float si = float(shown[i]), sj = float(shown[j]);
-      const float cost = si + sj > 0.0f ? 2.0f * si * sj / (si + sj) * colour_difference(candidates[i], candidates[j]) : 0.0f;
-      if (cost < best_cost) best = {j, i}, best_cost = cost;  // the later into the earlier slot
+      const float cost = 2.0f * si * sj * colour_difference(candidates[i], candidates[j]), per = std::max(si + sj, 1.0f);
+      if (cost * best_per < best_cost * per) best = {j, i}, best_cost = cost, best_per = per;  // the later into the earlier slot
     }
   return best;
 }
