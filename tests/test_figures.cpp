@@ -121,6 +121,12 @@ TEST(Figures, TablesWriteCsvAndCharts) {
   bench::plot_bars(t, {"bars", "", "y", false, {}}, dir.file("bars.png"));
   EXPECT_GT(read_display_image(dir.file("lines.png")).width, 500);
   EXPECT_GT(read_display_image(dir.file("bars.png")).width, 500);
+  // The legend widens with its longest label (RSAA's labels name every option they set; they ran
+  // off the image's edge).
+  const int short_width = read_display_image(dir.file("lines.png")).width;
+  t.columns[2] = "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me and a label longer still than that";
+  bench::plot_lines(t, {"lines", "x", "y", false, {}}, dir.file("long.png"));
+  EXPECT_GT(read_display_image(dir.file("long.png")).width, short_width + 100);
 }
 
 class FiguresGl : public test::GlTest {};

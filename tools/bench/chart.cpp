@@ -127,7 +127,13 @@ std::string table_csv(const FigureTable& t) {
 
 void plot_lines(const FigureTable& t, const ChartStyle& style, const std::string& path) {
   if (t.columns.size() < 2 || t.rows.size() < 2) throw std::invalid_argument("plot_lines: needs a y column and two rows");
-  const int width = 1040, height = 560, left = 70, right = 300, top = 50, bottom = 60;
+  // The legend is as wide as its longest label (RSAA labels name every option they set).
+  int legend_text = 0;
+  for (std::size_t c = 1; c < t.columns.size(); ++c) {
+    int baseline = 0;
+    legend_text = std::max(legend_text, cv::getTextSize(t.columns[c], cv::FONT_HERSHEY_SIMPLEX, 0.4, 1, &baseline).width);
+  }
+  const int right = std::max(300, legend_text + 60), width = 740 + right, height = 560, left = 70, top = 50, bottom = 60;
   cv::Mat canvas(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
   const auto x_of = [&](double x) { return style.log_x ? std::log10(x) : x; };
   Range xr, yr;
