@@ -12,7 +12,7 @@
 #            multisample pre-pass and the union pattern, how cost grows, the bench; about 10
 #            minutes), to measure them again on a quiet machine.
 #   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
-#   --only coverage: just the coverage family's goals and scale tests (about 25 minutes).
+#   --only coverage: just the coverage family's goals and scale tests (about 30 minutes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
