@@ -131,6 +131,12 @@ void merge_into_weighted(int i, int j, float sa, float sb) {
 // Everything weighted by the samples each covers.
 void merge_into(int i, int j) { merge_into_weighted(i, j, float(bits(s_coverage[i])), float(bits(s_coverage[j]))); }
 
+// colour_difference() of core/reference/dcaa.cpp: the largest channel difference on a
+// square-root scale.
+float colour_difference(int i, int j) {
+  vec3 d = abs(sqrt(max(s_colour[i], vec3(0.0))) - sqrt(max(s_colour[j], vec3(0.0))));
+  return max(d.r, max(d.g, d.b));
+}
 // colours_differ() of core/reference/dcaa.cpp: slots both shaded compare colours, both unshaded
 // their albedos (s_colour holds either).
 bool colours_differ(int i, int j) {
@@ -138,14 +144,7 @@ bool colours_differ(int i, int j) {
 #ifdef DCAA_SHADE_SURFACES
   if (is_shaded(i) != is_shaded(j)) return false;
 #endif
-  vec3 d = abs(sqrt(max(s_colour[i], vec3(0.0))) - sqrt(max(s_colour[j], vec3(0.0))));
-  return any(greaterThan(d, vec3(u_merge_colour_tolerance)));
-}
-// colour_difference() of core/reference/dcaa.cpp: the largest channel difference on a
-// square-root scale.
-float colour_difference(int i, int j) {
-  vec3 d = abs(sqrt(max(s_colour[i], vec3(0.0))) - sqrt(max(s_colour[j], vec3(0.0))));
-  return max(d.r, max(d.g, d.b));
+  return colour_difference(i, j) > u_merge_colour_tolerance;
 }
 
 void copy_slot(int to, int from) {

@@ -36,16 +36,20 @@ std::vector<int> front_counts(const std::vector<DcaaSurface>& surfaces, const Sa
   return counts;
 }
 
+// The largest channel difference of two surfaces' colours on a square-root scale (the first
+// merge's colour test, the least-change second merge's cost). Surfaces not shaded yet compare
+// albedos.
+float colour_difference(const DcaaSurface& a, const DcaaSurface& b) {
+  const Rgb& x = a.shaded ? a.colour : a.albedo;
+  const Rgb& y = b.shaded ? b.colour : b.albedo;
+  const auto d = [](float u, float v) { return std::abs(std::sqrt(std::max(u, 0.0f)) - std::sqrt(std::max(v, 0.0f))); };
+  return std::max({d(x.r, y.r), d(x.g, y.g), d(x.b, y.b)});
+}
+
 // The colour test of the first merge: surfaces both shaded compare colours, both unshaded their
 // albedos; a shaded and an unshaded one are not compared.
 bool colours_differ(const DcaaSurface& a, const DcaaSurface& b, float tolerance) {
-  if (!(tolerance > 0.0f) || a.shaded != b.shaded) return false;
-  const Rgb& x = a.shaded ? a.colour : a.albedo;
-  const Rgb& y = b.shaded ? b.colour : b.albedo;
-  const auto apart = [tolerance](float u, float v) {
-    return std::abs(std::sqrt(std::max(u, 0.0f)) - std::sqrt(std::max(v, 0.0f))) > tolerance;
-  };
-  return apart(x.r, y.r) || apart(x.g, y.g) || apart(x.b, y.b);
+  return tolerance > 0.0f && a.shaded == b.shaded && colour_difference(a, b) > tolerance;
 }
 
 // ka a + kb b renormalised; opposite normals average to nothing: then the heavier one's.
@@ -53,15 +57,6 @@ Normal3 weighted_normal(Normal3 a, Normal3 b, float ka, float kb, bool a_heavier
   const Normal3 n{ka * a.x + kb * b.x, ka * a.y + kb * b.y, ka * a.z + kb * b.z};
   const float len = std::sqrt(dot(n, n));
   return len > 1e-6f ? Normal3{n.x / len, n.y / len, n.z / len} : (a_heavier ? a : b);
-}
-
-// The colour difference of the least-change second merge: the largest channel difference on a
-// square-root scale (that of colours_differ()). Surfaces not shaded yet compare albedos.
-float colour_difference(const DcaaSurface& a, const DcaaSurface& b) {
-  const Rgb& x = a.shaded ? a.colour : a.albedo;
-  const Rgb& y = b.shaded ? b.colour : b.albedo;
-  const auto d = [](float u, float v) { return std::abs(std::sqrt(std::max(u, 0.0f)) - std::sqrt(std::max(v, 0.0f))); };
-  return std::max({d(x.r, y.r), d(x.g, y.g), d(x.b, y.b)});
 }
 
 // DcaaSettings::second_merge_least_change: which candidate goes (`removed`) and the one it is
