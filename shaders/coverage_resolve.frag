@@ -230,26 +230,26 @@ void insert_fragment(CoverageRecord r) {
       if (s_depth[j].x < s_depth[i].x || (s_depth[j].x == s_depth[i].x && j < i)) ++rank;
     front_to_back[rank] = i;
   }
-  uvec2 closer = uvec2(0u);
   int smallest = -1, smallest_visible = 0;
-  for (int k = 0; k < n; ++k) {
-    int i = front_to_back[k];
-    int visible = bits(s_coverage[i] & ~closer);
-    closer |= s_coverage[i];
-    if (k > 0 && (smallest < 0 || visible <= smallest_visible)) {
-      smallest = i;
-      smallest_visible = visible;
-    }
-  }
   int counts[MAX_SURFACES + 1];
   if (u_per_sample_visibility) {
     front_counts(n, counts);
-    smallest = -1;
     for (int k = n - 1; k >= 0; --k) {  // back to front: ties go to the farther
       int i = front_to_back[k];
       if (smallest < 0 || counts[i] < smallest_visible) {
         smallest = i;
         smallest_visible = counts[i];
+      }
+    }
+  } else {  // the coarse depth resolve, the front-most excluded
+    uvec2 closer = uvec2(0u);
+    for (int k = 0; k < n; ++k) {
+      int i = front_to_back[k];
+      int visible = bits(s_coverage[i] & ~closer);
+      closer |= s_coverage[i];
+      if (k > 0 && (smallest < 0 || visible <= smallest_visible)) {
+        smallest = i;
+        smallest_visible = visible;
       }
     }
   }

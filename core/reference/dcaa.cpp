@@ -174,21 +174,21 @@ DcaaEvent DcaaPixel::insert(const CoverageFragment& f) {
   std::stable_sort(front_to_back.begin(), front_to_back.end(), [&](int a, int b) {
     return candidates[a].depth.at_centre < candidates[b].depth.at_centre;
   });
-  Mask closer = 0;
   int smallest = -1, smallest_visible = 0;
-  for (int k = 0; k < n; ++k) {
-    const int i = front_to_back[k];
-    const int visible = similar_count(candidates[i].coverage & ~closer);
-    closer |= candidates[i].coverage;
-    if (k > 0 && (smallest < 0 || visible <= smallest_visible)) smallest = i, smallest_visible = visible;
-  }
   std::vector<int> counts;
   if (settings_.per_sample_visibility) {
     counts = front_counts(candidates, *pattern_);
-    smallest = -1;
     for (int k = n - 1; k >= 0; --k) {  // back to front: ties go to the farther
       const int i = front_to_back[k];
       if (smallest < 0 || counts[i] < smallest_visible) smallest = i, smallest_visible = counts[i];
+    }
+  } else {  // the coarse depth resolve, the front-most excluded
+    Mask closer = 0;
+    for (int k = 0; k < n; ++k) {
+      const int i = front_to_back[k];
+      const int visible = similar_count(candidates[i].coverage & ~closer);
+      closer |= candidates[i].coverage;
+      if (k > 0 && (smallest < 0 || visible <= smallest_visible)) smallest = i, smallest_visible = visible;
     }
   }
   const auto keep_all_but = [&](int removed) {
