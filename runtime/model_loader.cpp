@@ -16,6 +16,7 @@
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -90,6 +91,15 @@ std::string lower_extension(const std::string& path) {
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   return ext;
 }
+
+}  // namespace
+
+float generated_normals_crease_degrees(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".ifc" || ext == ".ifczip" ? kBuildingCreaseDegrees : kSmoothCreaseDegrees;
+}
+
+namespace {
 
 // Element counts that a header declares, checked against the bytes that could hold them before
 // the importer allocates for them (assimp 5.2 trusts them: OutOfMemory.off asks for 24 GB).
@@ -259,6 +269,7 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
     AllocationBudget budget(import_budget(0));
     io = new BoundedIOSystem(&budget);
     importer.SetIOHandler(io);  // the importer owns it
+    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, generated_normals_crease_degrees(path));
     try {
       // Post-processing runs only on a scene whose structure holds (broken_structure): an
       // importer that builds a broken one crashed the steps after it (RAW's WithTexture.raw: a

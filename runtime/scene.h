@@ -90,6 +90,17 @@ void check_frameable(const Scene& scene, const std::string& what);
 // overflowed at 20,000. Deeper files are stopped by a fault guard that names the scene.
 constexpr std::size_t kLoaderStackBytes = std::size_t{512} << 20;
 
+// Normals for a model that has none (assimp generates them, averaging the faces that meet at a
+// vertex position): faces meeting at more than this angle keep their own normals (a crease).
+// Building models (IFC) are planar solids: averaged across their 90-degree corners, a flat wall
+// or floor slab shades as a curved blob and coplanar triangles meet with different shading
+// (tested in tests/test_scene.cpp); 60 degrees keeps tessellated arcs (columns, round windows)
+// smooth. Other formats keep assimp's 175 degrees (smooth everywhere): a low-poly character
+// without normals (COB/dwarf.cob) turns faceted at any crease angle below 90.
+constexpr float kBuildingCreaseDegrees = 60.0f;
+constexpr float kSmoothCreaseDegrees = 175.0f;
+float generated_normals_crease_degrees(const std::string& path);
+
 // "builtin:NAME" or a model path. Throws std::runtime_error naming the scene on any problem:
 // unknown built-in, missing/unreadable file, no triangles, non-finite positions.
 Scene load_scene(const std::string& spec);

@@ -4,7 +4,7 @@
 # crops), the papers' figures, the coverage family's goals on held-out models, the
 # scene-specific tables and the reliability report. Logs go to
 # OUT_DIR/*.md; the pictures the README shows are copied to docs/images/.
-# Usage: tools/readme_figures.sh [--quick] [--only papers|cost|diagnosis|coverage] [OUT_DIR]
+# Usage: tools/readme_figures.sh [--quick] [--only papers|cost|diagnosis|coverage|goals] [OUT_DIR]
 #   --quick: CI scale (small images, few cases and frames, under 2 minutes); it checks that every
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
 #   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
@@ -13,6 +13,7 @@
 #            minutes), to measure them again on a quiet machine.
 #   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
 #   --only coverage: just the coverage family's goals and scale tests (about 30 minutes).
+#   --only goals: just RSAA's goals (issue 11) on the bench scenes and held-out models.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -20,14 +21,14 @@ only=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --quick) quick=1; shift ;;
-    --only) only=${2:?--only needs a step: papers, cost, diagnosis or coverage}; shift 2 ;;
-    -h | --help) sed -n 2,15p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --only) only=${2:?--only needs a step: papers, cost, diagnosis, coverage or goals}; shift 2 ;;
+    -h | --help) sed -n 2,16p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
-[[ -z $only || $only == papers || $only == cost || $only == diagnosis || $only == coverage ]] ||
-  { echo "readme_figures.sh: --only $only: the steps run alone are: papers, cost, diagnosis, coverage" >&2; exit 2; }
-[[ $only != cost && $only != diagnosis && $only != coverage || $quick == 0 ]] ||
+[[ -z $only || $only == papers || $only == cost || $only == diagnosis || $only == coverage || $only == goals ]] ||
+  { echo "readme_figures.sh: --only $only: the steps run alone are: papers, cost, diagnosis, coverage, goals" >&2; exit 2; }
+[[ $only != cost && $only != diagnosis && $only != coverage && $only != goals || $quick == 0 ]] ||
   { echo "readme_figures.sh: --only $only has no --quick form" >&2; exit 2; }
 default_out=out/figures
 [[ $quick == 1 ]] && default_out=out/figures-quick
@@ -141,6 +142,22 @@ coverage_steps() {
     bash tools/coverage_goals.sh --scale --out-dir "$out/coverage-goals-bench-scale" builtin:default "$engine" "$truck" \
       $models/OBJ/spider.obj; } >"$out/coverage-goals-bench.md"
 }
+# RSAA's goals (issue 11) on the bench scenes, the coplanar scene and held-out models, with what the
+# latest default (material edges) changed; crops of the coplanar scene.
+goals_steps() {
+  step "RSAA's goals, material edges off -> on" rsaa-goals.md
+  bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges off" builtin:default \
+    builtin:grazing builtin:edges builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar \
+    "$engine" "$truck" $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj $models/3DS/fels.3ds $models/Collada/duck.dae \
+    $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o \
+    $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
+    $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
+    >"$out/rsaa-goals.md"
+  bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
+    noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
+  step "RSAA's goals on 13 more held-out models" rsaa-goals-more.md
+  bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" "${more_models[@]}" >"$out/rsaa-goals-more.md"
+}
 if [[ $only == cost ]]; then
   cost_steps
   echo "the timing steps done in $((SECONDS - started)) s" >&2
@@ -154,6 +171,11 @@ fi
 if [[ $only == coverage ]]; then
   coverage_steps
   echo "the coverage steps done in $((SECONDS - started)) s" >&2
+  exit 0
+fi
+if [[ $only == goals ]]; then
+  goals_steps
+  echo "RSAA's goals done in $((SECONDS - started)) s" >&2
   exit 0
 fi
 if [[ $only == papers ]]; then
@@ -214,20 +236,7 @@ diagnosis_steps
 step "bench, RSAA against its baselines" bench-rsaa.md
 $rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
   --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"
-# RSAA's goals (issue 11) on the bench scenes, the coplanar scene and held-out models, with what the
-# latest default (material edges) changed; crops of the coplanar scene.
-step "RSAA's goals, material edges off -> on" rsaa-goals.md
-bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges off" builtin:default \
-  builtin:grazing builtin:edges builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar \
-  "$engine" "$truck" $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj $models/3DS/fels.3ds $models/Collada/duck.dae \
-  $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o \
-  $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
-  $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
-  >"$out/rsaa-goals.md"
-bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
-  noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
-step "RSAA's goals on 13 more held-out models" rsaa-goals-more.md
-bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" "${more_models[@]}" >"$out/rsaa-goals-more.md"
+goals_steps
 cost_steps
 papers_figures
 coverage_steps
