@@ -94,8 +94,8 @@ constexpr std::size_t kLoaderStackBytes = std::size_t{512} << 20;
 // vertex position): faces meeting at more than this angle keep their own normals (a crease).
 // Building models (IFC) are planar solids: averaged across their 90-degree corners, a flat wall
 // or floor slab shades as a curved blob and coplanar triangles meet with different shading
-// (tested in tests/test_scene.cpp); 60 degrees keeps tessellated arcs (columns, round windows)
-// smooth. Other formats keep assimp's 175 degrees (smooth everywhere): a low-poly character
+// (test SceneLoading.BuildingModelsShadeTheirFlatFacesFlat); 60 degrees keeps tessellated arcs
+// (columns, round windows) smooth. Other formats keep assimp's 175 degrees (smooth everywhere): a low-poly character
 // without normals (COB/dwarf.cob) turns faceted at any crease angle below 90.
 constexpr float kBuildingCreaseDegrees = 60.0f;
 constexpr float kSmoothCreaseDegrees = 175.0f;
