@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "runtime/coplanar_draws.h"
 #include "runtime/scene.h"
 
 namespace rsaa {
@@ -328,6 +329,7 @@ Scene builtin_scene(const std::string& name) {
   Scene s = it->second();
   s.name = "builtin:" + name;
   if (s.draws.empty()) s.draws = {{0, static_cast<std::uint32_t>(s.indices.size()), -1}};
+  rank_coplanar_draws(s);
   return s;
 }
 

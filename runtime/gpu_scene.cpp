@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "runtime/coplanar_draws.h"
 #include "runtime/gl_context.h"
 
 namespace rsaa {
@@ -79,6 +80,7 @@ void GpuScene::draw(GLuint program) const {
   const GLint has_texture = glGetUniformLocation(program, "u_has_texture");
   const GLint primitive_base = glGetUniformLocation(program, "u_primitive_base");
   const GLint material = glGetUniformLocation(program, "u_material");
+  const GLint depth_bias = glGetUniformLocation(program, "u_depth_bias");
   const GLint texture = glGetUniformLocation(program, "u_texture");
   if (texture >= 0) glProgramUniform1i(program, texture, 0);
   for (const DrawRange& d : draws_) {
@@ -86,6 +88,8 @@ void GpuScene::draw(GLuint program) const {
     if (has_texture >= 0) glProgramUniform1i(program, has_texture, textured);
     if (primitive_base >= 0) glProgramUniform1ui(program, primitive_base, d.first_index / 3);
     if (material >= 0) glProgramUniform1ui(program, material, d.material);
+    // NDC depth spans 2 for window depth's 1.
+    if (depth_bias >= 0) glProgramUniform1f(program, depth_bias, 2.0f * kCoplanarDepthStep * float(d.depth_rank));
     if (textured) glBindTextureUnit(0, textures_[d.texture].get());
     glDrawElements(GL_TRIANGLES, GLsizei(d.index_count), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(std::size_t(d.first_index) * sizeof(std::uint32_t)));

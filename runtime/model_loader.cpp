@@ -21,6 +21,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include "core/util/atomic_file.h"
+#include "runtime/coplanar_draws.h"
 #include "core/util/colour.h"
 #include "image/image_io.h"
 #include "runtime/allocation_budget.h"
@@ -469,6 +470,7 @@ Scene with_textures(ImportedModel model) {
     draw.texture = draw.texture >= 0 && std::size_t(draw.texture) < texture_of_material.size()
                        ? texture_of_material[std::size_t(draw.texture)]
                        : -1;
+  rank_coplanar_draws(scene);
   return std::move(model.scene);
 }
 

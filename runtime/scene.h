@@ -38,6 +38,9 @@ struct DrawRange {
   // texture share it; 0 in the built-in scenes but builtin:coplanar). RSAA's material edges
   // (RsaaSettings::material_edges) tell coplanar parts apart by it.
   std::uint32_t material = 0;
+  // Coplanar overlaps with earlier draws resolved by draw order (runtime/coplanar_draws.h): the
+  // vertex stage pushes the draw back by depth_rank x kCoplanarDepthStep of window depth.
+  std::uint32_t depth_rank = 0;
 };
 
 struct Scene {
