@@ -9,7 +9,8 @@
 // stage (shaders/scene.vert, u_depth_bias) moves its vertices back along their view rays by
 // kCoplanarDepthStep window-depth units per rank: more than the rounding of coplanar depths (at
 // most 55 steps of 2^-24 for 99.99% of a scene's fragments between scales; README, *Held-out
-// models*), far less than any modelled gap.
+// models*), small against the gaps scenes model (a surface modelled closer than rank x 2^-18 of
+// window depth in front of an overlapped one would be crossed).
 #pragma once
 
 #include <cstdint>
