@@ -85,6 +85,7 @@ CoplanarRanks draw_depth_ranks(const Scene& scene, std::uint64_t max_pair_tests)
 
   struct Entry {
     std::uint32_t draw, triangle;
+    Plane plane;
   };
   std::unordered_map<CellKey, std::vector<Entry>, CellHash> cells;
   std::unordered_set<std::uint64_t> overlapping;  // (earlier draw, later draw) pairs found
@@ -104,10 +105,11 @@ CoplanarRanks draw_depth_ranks(const Scene& scene, std::uint64_t max_pair_tests)
       const std::array<double, 4> cell{normal_cell, normal_cell, normal_cell, offset_cell};
       const std::array<double, 4> tolerance{kCoplanarNormalTolerance, kCoplanarNormalTolerance,
                                             kCoplanarNormalTolerance, distance_tolerance};
-      std::array<std::int64_t, 4> first, last;
+      std::array<std::int64_t, 4> first, last, home;
       for (int k = 0; k < 4; ++k) {
         first[k] = std::int64_t(std::floor((value[k] - tolerance[k]) / cell[k]));
         last[k] = std::int64_t(std::floor((value[k] + tolerance[k]) / cell[k]));
+        home[k] = std::int64_t(std::floor(value[k] / cell[k]));
       }
       const Vec box_lo = glm::min(p[0], glm::min(p[1], p[2])), box_hi = glm::max(p[0], glm::max(p[1], p[2]));
       CellKey key;
@@ -125,12 +127,10 @@ CoplanarRanks draw_depth_ranks(const Scene& scene, std::uint64_t max_pair_tests)
                   out.complete = false;
                   return out;
                 }
-                const std::array<Vec, 3> q = corners(e.triangle);
-                Plane other;
-                plane_of(q, &other);
-                if (glm::length(other.normal - plane.normal) >= kCoplanarNormalTolerance ||
-                    std::abs(other.offset - plane.offset) >= distance_tolerance)
+                if (glm::length(e.plane.normal - plane.normal) >= kCoplanarNormalTolerance ||
+                    std::abs(e.plane.offset - plane.offset) >= distance_tolerance)
                   continue;
+                const std::array<Vec, 3> q = corners(e.triangle);
                 const Vec q_lo = glm::min(q[0], glm::min(q[1], q[2])), q_hi = glm::max(q[0], glm::max(q[1], q[2]));
                 if (glm::any(glm::lessThan(glm::min(box_hi, q_hi) - glm::max(box_lo, q_lo), Vec(-distance_tolerance))))
                   continue;
@@ -139,9 +139,7 @@ CoplanarRanks draw_depth_ranks(const Scene& scene, std::uint64_t max_pair_tests)
                 out.rank[d] = std::max(out.rank[d], out.rank[e.draw] + 1);
               }
             }
-      cells[CellKey{{std::int64_t(std::floor(value[0] / cell[0])), std::int64_t(std::floor(value[1] / cell[1])),
-                     std::int64_t(std::floor(value[2] / cell[2])), std::int64_t(std::floor(value[3] / cell[3]))}}]
-          .push_back({d, t});
+      cells[CellKey{home}].push_back({d, t, plane});
     }
   }
   return out;

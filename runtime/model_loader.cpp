@@ -21,10 +21,10 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include "core/util/atomic_file.h"
-#include "runtime/coplanar_draws.h"
 #include "core/util/colour.h"
 #include "image/image_io.h"
 #include "runtime/allocation_budget.h"
+#include "runtime/coplanar_draws.h"
 #include "runtime/scene.h"
 
 namespace rsaa {

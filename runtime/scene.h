@@ -39,7 +39,8 @@ struct DrawRange {
   // (RsaaSettings::material_edges) tell coplanar parts apart by it.
   std::uint32_t material = 0;
   // Coplanar overlaps with earlier draws resolved by draw order (runtime/coplanar_draws.h): the
-  // vertex stage pushes the draw back by depth_rank x kCoplanarDepthStep of window depth.
+  // vertex stage moves the draw back along the view rays by depth_rank x kCoplanarDepthStep of
+  // window depth.
   std::uint32_t depth_rank = 0;
 };
 
@@ -98,8 +99,8 @@ constexpr std::size_t kLoaderStackBytes = std::size_t{512} << 20;
 // Building models (IFC) are planar solids: averaged across their 90-degree corners, a flat wall
 // or floor slab shades as a curved blob and coplanar triangles meet with different shading
 // (test SceneLoading.BuildingModelsShadeTheirFlatFacesFlat); 60 degrees keeps tessellated arcs
-// (columns, round windows) smooth. Other formats keep assimp's 175 degrees (smooth everywhere): a low-poly character
-// without normals (COB/dwarf.cob) turns faceted at any crease angle below 90.
+// (columns, round windows) smooth. Other formats keep assimp's 175 degrees (smooth everywhere):
+// a low-poly character without normals (COB/dwarf.cob) turns faceted at any crease angle below 90.
 constexpr float kBuildingCreaseDegrees = 60.0f;
 constexpr float kSmoothCreaseDegrees = 175.0f;
 float generated_normals_crease_degrees(const std::string& path);
