@@ -19,6 +19,7 @@
 #include "runtime/techniques/techniques.h"
 #include "tools/bench/diagnosis.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 #include "tools/cli/out_dir.h"
 #include "tools/cli/technique_options.h"
 
@@ -32,6 +33,7 @@ struct DiagnoseArgs {
   std::string camera;
   std::string out_dir = "out/diagnose";
   int surface_samples_per_side = 8;
+  float anisotropy = kDefaultTextureAnisotropy;
 };
 
 // Triangle id + 1 (0 = background) seen at each pixel for the sample at pixel-space `offset`.
@@ -84,7 +86,8 @@ int run_diagnose(const DiagnoseArgs& a) {
   validate_size(a.width, a.height);
   if (a.surface_samples_per_side < 2 || a.surface_samples_per_side > 16)
     throw std::invalid_argument("--surface-samples must be 2..16 per side");
-  const Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
+  Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
+  scene.texture_anisotropy = a.anisotropy;
   std::optional<Camera> requested;
   if (!a.camera.empty()) requested = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   const Camera camera = choose_camera(scene, requested);
@@ -168,6 +171,7 @@ Action add_diagnose_command(CLI::App& app) {
       "diagnose", "Split RSAA's image error against 64x SSAA by pixel class (surfaces seen, mask rule, missed "
                   "edges, no other colour nearby) with an error map and the best-single-fetch bound");
   cmd->add_option("--scene", args->scene, "builtin:NAME or a model file assimp reads")->capture_default_str();
+  add_anisotropy_option(cmd, args->anisotropy);
   add_technique_options(cmd, args->technique);
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();
   cmd->add_option("--height", args->height, "Image height")->capture_default_str();

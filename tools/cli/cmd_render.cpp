@@ -8,6 +8,7 @@
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 #include "tools/cli/technique_options.h"
 
 namespace rsaa::cli {
@@ -20,12 +21,14 @@ struct RenderArgs {
   std::string camera;
   std::string out;
   float scene_scale = 1.0f;
+  float anisotropy = kDefaultTextureAnisotropy;
 };
 
 int run_render(const RenderArgs& a) {
   validate(a.technique);
   validate_size(a.width, a.height);
-  const Scene scene = scaled_scene(load_scene_within(a.scene, kSceneLoadSeconds), a.scene_scale);
+  Scene scene = scaled_scene(load_scene_within(a.scene, kSceneLoadSeconds), a.scene_scale);
+  scene.texture_anisotropy = a.anisotropy;
   std::optional<Camera> camera;
   if (!a.camera.empty()) camera = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   require_image_module();  // its images are written at the end: said now if they cannot be
@@ -63,6 +66,7 @@ Action add_render_command(CLI::App& app) {
                   "ex,ey,ez,tx,ty,tz[,fov]: eye, target, vertical fov in degrees (default: the "
                   "scene's view, or framing the model's bounds)");
   cmd->add_option("--scene-scale", args->scene_scale, "Multiply the scene's positions and camera by this (units test)");
+  add_anisotropy_option(cmd, args->anisotropy);
   cmd->add_option("--out", args->out, "Output image (PNG: 8-bit sRGB; EXR: linear)")->required();
   return [args, cmd] {
     validate(args->technique);

@@ -49,4 +49,14 @@ inline CLI::Validator whole_range(std::uint64_t lo, std::uint64_t hi) {
   return kWholeNumber & CLI::Range(lo, hi);
 }
 
+// --anisotropy of the commands that render scenes: the texture sampler's largest anisotropy.
+inline CLI::Option* add_anisotropy_option(CLI::App* cmd, float& anisotropy) {
+  return cmd
+      ->add_option("--anisotropy", anisotropy,
+                   "Texture filtering: the sampler's largest anisotropy, capped at the driver's (1 = "
+                   "trilinear only)")
+      ->check(finite_range(1, 1024))
+      ->capture_default_str();
+}
+
 }  // namespace rsaa::cli
