@@ -12,10 +12,6 @@
 
 namespace rsaa {
 
-namespace {
-
-// The driver's largest sampler anisotropy: core in GL 4.6, an extension before (Mesa's llvmpipe
-// offers 16 on GL 4.5); 1 where neither is there.
 float max_texture_anisotropy() {
   if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") &&
       !epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
@@ -24,8 +20,6 @@ float max_texture_anisotropy() {
   glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &largest);
   return std::max(largest, 1.0f);
 }
-
-}  // namespace
 
 GpuScene::GpuScene(const Scene& scene)
     : draws_(scene.draws), background_(scene.background), triangles_(scene.triangle_count()) {

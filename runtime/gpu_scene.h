@@ -10,6 +10,11 @@
 
 namespace rsaa {
 
+// The driver's largest sampler anisotropy (needs a current context): core in GL 4.6, an extension
+// before (Mesa's llvmpipe offers 16 on GL 4.5); 1 where neither is there. GpuScene filters the
+// scene's textures with min(Scene::texture_anisotropy, this).
+float max_texture_anisotropy();
+
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
