@@ -1,7 +1,5 @@
 #include "runtime/gpu_scene.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <stdexcept>
@@ -12,17 +10,11 @@
 
 namespace rsaa {
 
-float max_texture_anisotropy() {
-  if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") &&
-      !epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
-    return 1.0f;
-  GLfloat largest = 1.0f;
-  glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &largest);
-  return std::max(largest, 1.0f);
-}
-
 GpuScene::GpuScene(const Scene& scene)
-    : draws_(scene.draws), background_(scene.background), triangles_(scene.triangle_count()) {
+    : draws_(scene.draws),
+      background_(scene.background),
+      texture_anisotropy_(scene.texture_anisotropy),
+      triangles_(scene.triangle_count()) {
   GLuint id;
   glCreateBuffers(1, &id);
   vertices_ = gl::Buffer(id);
@@ -50,10 +42,10 @@ GpuScene::GpuScene(const Scene& scene)
     glVertexArrayAttribFormat(id, a.location, a.size, GL_FLOAT, GL_FALSE, GLuint(a.offset));
     glVertexArrayAttribBinding(id, a.location, 0);
   }
-  if (!std::isfinite(scene.texture_anisotropy) || scene.texture_anisotropy < 1.0f)
+  if (!(scene.texture_anisotropy >= 1.0f && scene.texture_anisotropy <= kMaxTextureAnisotropy))
     throw std::invalid_argument("scene '" + scene.name + "': texture anisotropy " +
-                                std::to_string(scene.texture_anisotropy) + " is not a number >= 1");
-  const float anisotropy = std::min(scene.texture_anisotropy, max_texture_anisotropy());
+                                std::to_string(scene.texture_anisotropy) + " is not within 1.." +
+                                std::to_string(int(kMaxTextureAnisotropy)));
   for (const TextureImage& t : scene.textures) {
     GLuint tex;
     glCreateTextures(GL_TEXTURE_2D, 1, &tex);
@@ -66,7 +58,6 @@ GpuScene::GpuScene(const Scene& scene)
     glGenerateTextureMipmap(tex);
     glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    if (anisotropy > 1.0f) glTextureParameterf(tex, GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
     glTextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_REPEAT);
     textures_.emplace_back(tex);
@@ -99,6 +90,8 @@ void GpuScene::draw(GLuint program) const {
   const GLint depth_bias = glGetUniformLocation(program, "u_depth_bias");
   const GLint texture = glGetUniformLocation(program, "u_texture");
   if (texture >= 0) glProgramUniform1i(program, texture, 0);
+  const GLint anisotropy = glGetUniformLocation(program, "u_texture_anisotropy");
+  if (anisotropy >= 0) glProgramUniform1f(program, anisotropy, texture_anisotropy_);
   for (const DrawRange& d : draws_) {
     const bool textured = d.texture >= 0 && d.texture < int(textures_.size());
     if (has_texture >= 0) glProgramUniform1i(program, has_texture, textured);

@@ -10,18 +10,14 @@
 
 namespace rsaa {
 
-// The driver's largest sampler anisotropy (needs a current context): core in GL 4.6, an extension
-// before (Mesa's llvmpipe offers 16 on GL 4.5); 1 where neither is there. GpuScene filters the
-// scene's textures with min(Scene::texture_anisotropy, this).
-float max_texture_anisotropy();
-
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
 
   // Draws every triangle with `program` bound. Attribute locations: 0 position, 1 normal, 2 uv,
   // 3 albedo, 4 filter alpha. Sets u_texture (unit 0), u_has_texture, u_primitive_base (so that
-  // primitive ids are unique across draw calls) and u_material when the program has them. Binds the point lights (uniform
+  // primitive ids are unique across draw calls), u_material and u_texture_anisotropy when the
+  // program has them. Binds the point lights (uniform
   // block binding 4) for every shading pass that follows.
   void draw(GLuint program) const;
 
@@ -34,6 +30,7 @@ class GpuScene {
   std::vector<gl::Texture> textures_;
   std::vector<DrawRange> draws_;
   glm::vec3 background_;
+  float texture_anisotropy_ = 1.0f;
   std::size_t triangles_ = 0;
 };
 

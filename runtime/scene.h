@@ -44,8 +44,11 @@ struct DrawRange {
   std::uint32_t depth_rank = 0;
 };
 
-// The sampler's anisotropy for scene textures unless a caller asks otherwise (`--anisotropy`).
+// Texture filtering of the scene's shaders (shaders/scene_shading.glsl): up to this many
+// trilinear probes along a texture footprint's long axis, unless a caller asks otherwise
+// (`--anisotropy`), at most kMaxTextureAnisotropy.
 constexpr float kDefaultTextureAnisotropy = 16.0f;
+constexpr float kMaxTextureAnisotropy = 16.0f;
 
 struct Scene {
   std::string name;
@@ -58,9 +61,9 @@ struct Scene {
   // Extra lights beside the fixed one (view space; none unless a caller adds them: the bench's
   // --lights). Every technique shades with them where it shades (shaders/shading.glsl).
   std::vector<PointLight> point_lights;
-  // How textures are filtered: the largest anisotropy a lookup may use, capped at what the driver
-  // offers (1 = trilinear only). Engines filter anisotropically; trilinear alone blurs a texture
-  // seen at a grazing angle to its coarse mip level, error no resolve of the image removes.
+  // How textures are filtered: the largest anisotropy a lookup may use, 1..kMaxTextureAnisotropy
+  // (1 = trilinear only). Engines filter anisotropically; trilinear alone blurs a texture seen at
+  // a grazing angle to the mip level of its compressed direction.
   float texture_anisotropy = kDefaultTextureAnisotropy;
 
   std::size_t triangle_count() const { return indices.size() / 3; }

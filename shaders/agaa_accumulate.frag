@@ -13,6 +13,7 @@ layout(location = 0) out vec4 o_targets[8];
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
+  SceneUvGradients footprint = scene_uv_gradients();  // before the discard below
   uint me = scene_primitive_order() + 1u;
   uvec2 meta = texelFetch(u_meta, p, 0).xy;
   vec4 w = vec4(0.0);
@@ -21,7 +22,7 @@ void main() {
   if (w == vec4(0.0)) discard;
   w /= float(u_samples);
   vec3 n = scene_shading_normal();  // on the side of its triangle that is seen
-  vec3 albedo = scene_albedo();
+  vec3 albedo = scene_albedo(footprint);
   float z = f_in.view_position.z;
   for (int a = 0; a < 4; ++a) {
     o_targets[2 * a] = vec4(albedo * w[a], w[a]);

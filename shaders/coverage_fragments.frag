@@ -26,6 +26,7 @@ void main() {
   // Window depth is linear in screen space over a triangle: these are its plane's slopes (taken
   // before any branch, so that the quad's derivatives are defined).
   vec2 depth_slopes = vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
+  SceneUvGradients footprint = scene_uv_gradients();  // the texture's, likewise
   uvec2 coverage;
   vec3 plane;  // depth at the centre, d/dx, d/dy in pixel space (y down)
   if (f_cov.exact == 1) {
@@ -49,9 +50,9 @@ void main() {
   if (u_z_prepass && plane.x - 0.5 * (abs(plane.y) + abs(plane.z)) > texelFetch(u_max_depth, ivec2(c), 0).x + 1e-6)
     discard;
 #ifdef COVERAGE_SHADING_INPUTS
-  vec3 colour = scene_albedo();  // shaded once per surface by the resolve
+  vec3 colour = scene_albedo(footprint);  // shaded once per surface by the resolve
 #else
-  vec3 colour = shade_scene_fragment().rgb;
+  vec3 colour = shade_scene_fragment(footprint).rgb;
 #endif
   if (any(isnan(colour)) || any(isinf(colour)) || any(isnan(plane)) || any(isinf(plane))) discard;
 

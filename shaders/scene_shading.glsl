@@ -18,6 +18,7 @@ in FragmentData {
 
 uniform sampler2D u_texture;
 uniform bool u_has_texture;
+uniform float u_texture_anisotropy = 1.0;  // Scene::texture_anisotropy, 1..16
 uniform uint u_primitive_base;
 uniform uint u_material;  // the draw's material (Scene::draws), for RSAA's material edges
 
@@ -30,17 +31,52 @@ vec3 scene_shading_normal() {
   return n * f_in.normal_side;
 }
 
-vec3 scene_albedo() {
+// The texture's footprint: the uv's screen-space derivatives. Implicit derivatives are undefined
+// after a discard or in a branch some pixels of a quad skip: shaders that discard before shading
+// take these at the top of main(), in uniform control flow, and pass them on.
+struct SceneUvGradients {
+  vec2 dx, dy;
+};
+SceneUvGradients scene_uv_gradients() { return SceneUvGradients(dFdx(f_in.uv), dFdy(f_in.uv)); }
+
+// Anisotropic filtering in the shader (not the sampler's: Mesa llvmpipe's made the coverage
+// techniques' fragment passes 55 times slower on a textured model, and the driver's filter differs
+// between drivers): up to u_texture_anisotropy trilinear probes spread along the footprint's long
+// axis, at the mip level of the long axis over the probe count, as GL's description of anisotropic
+// filtering has it. One probe is trilinear filtering (the same level as texture()'s: the longer
+// axis). Non-finite footprints (edge-on triangles) fall back to the coarsest level.
+vec3 scene_texture(vec2 uv, SceneUvGradients footprint) {
+  vec2 size = vec2(textureSize(u_texture, 0));
+  vec2 dx = footprint.dx * size, dy = footprint.dy * size;  // in texels of level 0
+  float lx = length(dx), ly = length(dy);
+  float longest = max(lx, ly), shortest = min(lx, ly);
+  if (!(longest < 1e30)) return textureLod(u_texture, uv, 1e3).rgb;
+  float probes = clamp(ceil(longest / max(shortest, 1e-30)), 1.0, u_texture_anisotropy);
+  float level = log2(max(longest / probes, 1e-30));
+  vec2 axis = lx >= ly ? footprint.dx : footprint.dy;
+  int count = int(probes);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < count; ++i) sum += textureLod(u_texture, uv + axis * ((float(i) + 0.5) / probes - 0.5), level).rgb;
+  return sum / probes;
+}
+
+vec3 scene_albedo(SceneUvGradients footprint) {
   vec3 albedo = f_in.albedo;
-  if (u_has_texture) albedo *= texture(u_texture, f_in.uv).rgb;
+  if (u_has_texture) albedo *= scene_texture(f_in.uv, footprint);
   return albedo;
 }
 
-vec4 shade_scene_fragment() {
-  return vec4(shade_surface(scene_albedo(), scene_shading_normal(), f_in.view_position, SCENE_SPECULAR_EXPONENT,
+// In uniform control flow only (see scene_uv_gradients()).
+vec3 scene_albedo() { return scene_albedo(scene_uv_gradients()); }
+
+vec4 shade_scene_fragment(SceneUvGradients footprint) {
+  return vec4(shade_surface(scene_albedo(footprint), scene_shading_normal(), f_in.view_position, SCENE_SPECULAR_EXPONENT,
                             SCENE_SPECULAR_SCALE),
               f_in.filter_alpha);
 }
+
+// In uniform control flow only.
+vec4 shade_scene_fragment() { return shade_scene_fragment(scene_uv_gradients()); }
 
 // The submission order of this fragment's primitive over the whole scene (draw base + id).
 uint scene_primitive_order() { return u_primitive_base + uint(gl_PrimitiveID); }

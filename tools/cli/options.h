@@ -49,13 +49,13 @@ inline CLI::Validator whole_range(std::uint64_t lo, std::uint64_t hi) {
   return kWholeNumber & CLI::Range(lo, hi);
 }
 
-// --anisotropy of the commands that render scenes: the texture sampler's largest anisotropy.
+// --anisotropy of the commands that render scenes (Scene::texture_anisotropy).
 inline CLI::Option* add_anisotropy_option(CLI::App* cmd, float& anisotropy) {
   return cmd
       ->add_option("--anisotropy", anisotropy,
-                   "Texture filtering: the sampler's largest anisotropy, capped at the driver's (1 = "
-                   "trilinear only)")
-      ->check(finite_range(1, 1024))
+                   "Texture filtering: at most this many trilinear probes along a texture footprint's "
+                   "long axis (anisotropic filtering; 1 = trilinear only)")
+      ->check(finite_range(1, 16))
       ->capture_default_str();
 }
 
