@@ -45,13 +45,17 @@ SceneUvGradients scene_uv_gradients() { return SceneUvGradients(dFdx(f_in.uv), d
 // axis, at the mip level of the long axis over the probe count, as GL's description of anisotropic
 // filtering has it. One probe is trilinear filtering at the level GL describes for texture() (the
 // longer axis; drivers approximate it: llvmpipe's texture() images differ from one probe's by
-// 0.1 dB on a textured globe). Non-finite footprints (edge-on triangles) take the coarsest level.
+// 0.1 dB on a textured globe).
 vec3 scene_texture(vec2 uv, SceneUvGradients footprint) {
   vec2 size = vec2(textureSize(u_texture, 0));
   vec2 dx = footprint.dx * size, dy = footprint.dy * size;  // in texels of level 0
+  // A footprint wider than any texture (edge-on triangles, broken coordinates; NaN too) takes
+  // the coarsest level at the centre: probes spread that far would leave float's range.
+  vec4 spans = vec4(dx, dy);
+  if (any(isnan(spans)) || any(greaterThanEqual(abs(spans), vec4(65536.0))))  // isnan: compilers
+    return textureLod(u_texture, uv, 1e3).rgb;  // may turn !(a < b) into a >= b, false for NaN
   float lx = length(dx), ly = length(dy);
   float longest = max(lx, ly), shortest = min(lx, ly);
-  if (!(longest < 1e30)) return textureLod(u_texture, uv, 1e3).rgb;
   float probes = floor(clamp(ceil(longest / max(shortest, 1e-30)), 1.0, u_texture_anisotropy));
   float level = log2(max(longest / probes, 1e-30));
   vec2 axis = lx >= ly ? footprint.dx : footprint.dy;
@@ -63,7 +67,12 @@ vec3 scene_texture(vec2 uv, SceneUvGradients footprint) {
 
 vec3 scene_albedo(SceneUvGradients footprint) {
   vec3 albedo = f_in.albedo;
-  if (u_has_texture) albedo *= scene_texture(f_in.uv, footprint);
+  // A broken file's coordinates (not finite, or beyond float's fraction: the texture repeats) are
+  // looked up at their fraction, 0 if none, so no NaN reaches the image.
+  vec2 uv = f_in.uv;
+  if (any(isnan(uv)) || any(isinf(uv))) uv = vec2(0.0);
+  else if (any(greaterThanEqual(abs(uv), vec2(16777216.0)))) uv = fract(uv);
+  if (u_has_texture) albedo *= scene_texture(uv, footprint);
   return albedo;
 }
 

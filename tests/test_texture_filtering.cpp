@@ -96,5 +96,24 @@ TEST_F(TextureFiltering, AnAnisotropyOutsideOneToSixteenOrNotANumberIsRefused) {
   }
 }
 
+// Texture coordinates that are not finite or far beyond the texture (broken files) give finite
+// colours with every number of probes, and a floor seen edge-on (derivatives without bound).
+TEST_F(TextureFiltering, BrokenTextureCoordinatesGiveFiniteColours) {
+  for (float anisotropy : {1.0f, kDefaultTextureAnisotropy}) {
+    Scene scene = striped_floor(anisotropy);
+    scene.vertices[0].uv = {NAN, 0.0f};
+    scene.vertices[1].uv = {1e30f, -INFINITY};
+    scene.vertices[2].uv = {-3e38f, 7.0f};
+    for (const Camera& camera : {*scene.camera, Camera{{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -8.0f}, {0.0f, 1.0f, 0.0f}, 30.0f, 0.05f, 100.0f}}) {
+      const GpuScene gpu(scene);
+      for (const char* technique : {"noaa", "dcaa", "agaa"}) {
+        const Image image = render_frame(gpu, camera, technique_options(technique), 64, 32);
+        for (const auto& p : image.pixels)
+          ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b)) << technique << " anisotropy " << anisotropy;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rsaa
