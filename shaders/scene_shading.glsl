@@ -45,8 +45,12 @@ SceneUvGradients scene_uv_gradients() { return SceneUvGradients(dFdx(f_in.uv), d
 // axis, at the mip level of the long axis over the probe count, as GL's description of anisotropic
 // filtering has it. One probe is trilinear filtering at the level GL describes for texture() (the
 // longer axis; drivers approximate it: llvmpipe's texture() images differ from one probe's by
-// 0.1 dB on a textured globe).
+// 0.1 dB on a textured globe). A broken file's coordinates (not finite, or beyond float's
+// fraction: the texture repeats) are looked up at their fraction, 0 if none, so no NaN reaches
+// the image.
 vec3 scene_texture(vec2 uv, SceneUvGradients footprint) {
+  if (any(isnan(uv)) || any(isinf(uv))) uv = vec2(0.0);
+  else if (any(greaterThanEqual(abs(uv), vec2(16777216.0)))) uv = fract(uv);
   vec2 size = vec2(textureSize(u_texture, 0));
   vec2 dx = footprint.dx * size, dy = footprint.dy * size;  // in texels of level 0
   // A footprint wider than any texture (edge-on triangles, broken coordinates; NaN too) takes
@@ -67,12 +71,7 @@ vec3 scene_texture(vec2 uv, SceneUvGradients footprint) {
 
 vec3 scene_albedo(SceneUvGradients footprint) {
   vec3 albedo = f_in.albedo;
-  // A broken file's coordinates (not finite, or beyond float's fraction: the texture repeats) are
-  // looked up at their fraction, 0 if none, so no NaN reaches the image.
-  vec2 uv = f_in.uv;
-  if (any(isnan(uv)) || any(isinf(uv))) uv = vec2(0.0);
-  else if (any(greaterThanEqual(abs(uv), vec2(16777216.0)))) uv = fract(uv);
-  if (u_has_texture) albedo *= scene_texture(uv, footprint);
+  if (u_has_texture) albedo *= scene_texture(f_in.uv, footprint);
   return albedo;
 }
 

@@ -4,8 +4,11 @@
 // direction and blurs them to grey.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <utility>
 
 #include "runtime/camera.h"
 #include "runtime/gpu_scene.h"
