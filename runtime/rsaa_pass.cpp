@@ -123,7 +123,17 @@ constexpr GLint kRecordRowsLocation = 0;
 constexpr int kRecordUnits = 4;
 // The record passes' image units for the records, one per draw (rsaa_record_images[2]).
 constexpr int kRecordImages = 2;
+// What the pre-passes that write records keep per subsample and pixel: a surface record (RG32UI)
+// and a 32-bit depth.
+constexpr double kRecordBytesPerSubsample = 8.0 + 4.0;
 int record_first_unit(int prepass_first_unit) { return rsaa_record_first_unit(prepass_first_unit); }
+// Whether the record passes' texture units (the pre-pass's three and the records') are below the
+// driver's compute limit.
+bool record_units_fit(int prepass_first_unit) {
+  GLint compute_units = 0;
+  glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &compute_units);
+  return std::max(record_first_unit(prepass_first_unit) + kRecordUnits - 1, prepass_first_unit + 2) < compute_units;
+}
 // The edge list's head (rsaa_post_list.glsl: three group counts and the pixel count), and the
 // location of rsaa_post_classify.comp's rows.
 constexpr GLint64 kListHeadBytes = 16;
@@ -534,9 +544,10 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     throw std::invalid_argument("RSAA prepass_cull neighbours needs the jittered pre-pass, not '" + settings.prepass + "'");
   layered_ = settings.prepass == "records";
   // "auto": the multisample pre-pass where the driver samples the pattern (and its pixel list can
-  // address the image), else the jittered one.
-  const bool may_multisample =
-      settings.prepass == "msaa" || (settings.prepass == "auto" && !cull_ && width <= 65536 && height <= 65536);
+  // address the image), else the jittered draws writing records where these fit the budget, else
+  // the jittered pre-pass.
+  const bool auto_may_list = settings.prepass == "auto" && !cull_ && width <= 65536 && height <= 65536;
+  const bool may_multisample = settings.prepass == "msaa" || auto_may_list;
   multisample_ = may_multisample && driver_samples_pattern(pattern_);
   std::vector<glm::ivec2> union_raster;
   if (may_multisample && !multisample_) {
@@ -547,6 +558,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                   (n % 2 == 0 && n >= 4 ? ", nor two " + std::to_string(n / 2) +
                                                               "-sample draws whose union they are"
                                                         : ""));
+  }
+  if (auto_may_list && !multisample_ && record_units_fit(settings.prepass_first_unit) &&
+      double(width) * height * n * kRecordBytesPerSubsample <= double(settings.auto_records_max_bytes)) {
+    layered_ = true;
+    settings_.prepass = "records";  // the shaders' defines (rsaa_shader_defines) follow it
   }
   for (int k = 0; k < (n + 3) / 4; ++k) gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
   if (multisample_) {
@@ -587,7 +603,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   gl_->uniforms = gl::Buffer(buffer);
   glNamedBufferStorage(buffer, GLsizeiptr(block.size() * 4), block.data(), GL_DYNAMIC_STORAGE_BIT);
 
-  const std::string defines = rsaa_shader_defines(settings, n, multisample_, union_);
+  const std::string defines = rsaa_shader_defines(settings_, n, multisample_, union_);
   gl_->subsample_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                              {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
                                              {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
@@ -627,15 +643,15 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
   }
   if (writes_records()) {
-    const int record_unit = record_first_unit(settings.prepass_first_unit);
-    GLint compute_units = 0;
-    glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &compute_units);
-    if (std::max(record_unit + kRecordUnits - 1, settings.prepass_first_unit + 2) >= compute_units)
+    if (!record_units_fit(settings.prepass_first_unit)) {
+      GLint compute_units = 0;
+      glGetIntegerv(GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &compute_units);
       throw std::invalid_argument("RSAA prepass " + settings.prepass + ": its compute passes need texture units " +
                                   std::to_string(settings.prepass_first_unit) + " to +2 and " +
-                                  std::to_string(record_unit) + " to +" + std::to_string(kRecordUnits - 1) +
-                                  ", this driver has " +
+                                  std::to_string(record_first_unit(settings.prepass_first_unit)) + " to +" +
+                                  std::to_string(kRecordUnits - 1) + ", this driver has " +
                                   std::to_string(compute_units) + " compute texture units (lower prepass_first_unit)");
+    }
     // The records as images where the image units suffice and, for multisample records, the
     // driver loads multisample images of that many samples.
     GLint image_samples = 0, image_units = 0;
@@ -666,7 +682,7 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   double bytes = 0.0;
   bytes += (n + 3) / 4 * 4 * code_bytes;  // RGBA code texels
   if (writes_records())
-    bytes += n * (8.0 + 4.0);  // a surface record and a 32-bit depth a subsample (both draws of a union)
+    bytes += n * kRecordBytesPerSubsample;  // (both draws of a union)
   else
     bytes += cull_ ? 8.0 : 4.0;  // the draws' depth (+ stencil)
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks

@@ -202,9 +202,16 @@ struct RsaaSettings {
   // multisample pre-pass*). "records": the jittered draws, each writing the surface records (into
   // its own layers of array textures) instead of codes, and the same compute passes after: any
   // pattern, the same masks as "jittered" up to float ties (the records round the face normal to
-  // 2 x 16 bits), more memory (12-16 bytes a subsample). "auto" (default): "msaa" where the driver
-  // can, else "jittered" (and "jittered" with prepass_cull).
+  // 2 x 16 bits), more memory (12 bytes a subsample, see auto_records_max_bytes). "auto"
+  // (default): "msaa" where the driver can; else "records" while its records fit in
+  // auto_records_max_bytes (d3d8x on a 4-sample driver: the frame 20-40% cheaper than
+  // "jittered" on ten of the bench's eleven scenes, about 10% dearer on the spider, which covers
+  // little of the image; README, *Jittered draws writing records*); else "jittered" (and
+  // "jittered" with prepass_cull). RsaaPass::prepass_in_use() tells which.
   std::string prepass = "auto";
+  // The most GL memory "auto" gives the records of "records" (subsamples x 12 bytes a pixel: 8x at
+  // 1920x1080 takes 190 MiB; above this, "auto" takes "jittered", 4 bytes a pixel). 0: never.
+  std::int64_t auto_records_max_bytes = std::int64_t(256) << 20;
   // Culling of the jittered pre-pass (ours): "off" draws every subsample for every pixel (the
   // paper); "neighbours" first marks, once per frame, the pixels whose 3x3 neighbourhood of
   // centres (centre_primitive) shows another triangle or background, and the per-subsample draws
@@ -345,6 +352,9 @@ class RsaaPass {
   // True when the pre-pass is the multisample one (one draw, or two for a union pattern:
   // settings.prepass, "auto" resolved for this driver).
   bool multisample_prepass() const { return multisample_; }
+  // The pre-pass this pass runs: "msaa", "records" or "jittered" (settings.prepass, "auto"
+  // resolved for this driver and size).
+  std::string prepass_in_use() const { return multisample_ ? "msaa" : layered_ ? "records" : "jittered"; }
   // Bytes per pixel of the GL memory this pass keeps (the frame's targets are RsaaTargets'): the
   // pre-pass's codes and depth, the post-process's edge list or edge-pass depth, and, for a pass
   // that resolves in place, the scratch image the listed pixels are resolved into.

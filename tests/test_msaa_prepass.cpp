@@ -113,6 +113,7 @@ std::size_t culled_masks_differing(const std::string& scene_name, std::size_t* e
   const GpuScene gpu(scene);
   const View view = make_view(choose_camera(scene, std::nullopt), kWidth, kHeight);
   RsaaSettings settings;
+  settings.prepass = "jittered";  // the draws the culling skips, not "auto"'s records
   const std::vector<std::uint32_t> full = masks_of(gpu, view, settings);
   settings.prepass_cull = "neighbours";
   const std::vector<std::uint32_t> culled = masks_of(gpu, view, settings);
@@ -167,6 +168,47 @@ TEST_F(MsaaPrePass, RecordsGiveTheJitteredMasks) {
     EXPECT_GT(c.edges_jittered, 1000u) << scene;
     EXPECT_LE(c.differing, 10u) << scene;
   }
+}
+
+// What "auto" runs: the multisample pre-pass for the driver's own pattern; for a pattern it cannot
+// sample (d3d8x on this 4-sample driver), the jittered draws writing records while these fit
+// auto_records_max_bytes, else the jittered pre-pass; the jittered one with culling. Explicit
+// choices are kept.
+TEST_F(MsaaPrePass, AutoTakesRecordsWhereTheDriverCannotSampleThePatternAndTheyFit) {
+  const auto in_use = [](RsaaSettings settings, int width, int height) {
+    return RsaaPass(settings, width, height).prepass_in_use();
+  };
+  RsaaSettings d3d8x;  // the defaults: "auto", d3d8x
+  ASSERT_EQ(d3d8x.prepass, "auto");
+  EXPECT_EQ(in_use(d3d8x, kWidth, kHeight), "records");
+  RsaaSettings gl4x;
+  gl4x.pattern = "gl4x";
+  EXPECT_EQ(in_use(gl4x, kWidth, kHeight), "msaa");
+  // 8 subsamples x 12 bytes a pixel: 320x240 needs 7,372,800 bytes.
+  RsaaSettings tight = d3d8x;
+  tight.auto_records_max_bytes = std::int64_t(kWidth) * kHeight * 8 * 12;
+  EXPECT_EQ(in_use(tight, kWidth, kHeight), "records");
+  tight.auto_records_max_bytes -= 1;
+  EXPECT_EQ(in_use(tight, kWidth, kHeight), "jittered");
+  tight.auto_records_max_bytes = 0;
+  EXPECT_EQ(in_use(tight, 1, 1), "jittered");
+  // The default budget (256 MiB) holds 8x at 1920x1080, not at 2560x1440.
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  if (max_size >= 2560) {
+    EXPECT_EQ(in_use(d3d8x, 1920, 1080), "records");
+    EXPECT_EQ(in_use(d3d8x, 2560, 1440), "jittered");
+  }
+  RsaaSettings culled = d3d8x;
+  culled.prepass_cull = "neighbours";
+  EXPECT_EQ(in_use(culled, kWidth, kHeight), "jittered");
+  for (const char* explicit_choice : {"jittered", "records"}) {
+    RsaaSettings s = d3d8x;
+    s.prepass = explicit_choice;
+    EXPECT_EQ(in_use(s, kWidth, kHeight), explicit_choice);
+  }
+  gl4x.prepass = "jittered";
+  EXPECT_EQ(in_use(gl4x, kWidth, kHeight), "jittered");
 }
 
 TEST_F(MsaaPrePass, SameMasksAsJitteredOnEdgesScene) { expect_same_masks("builtin:edges"); }

@@ -194,7 +194,7 @@ TEST_F(RsaaPassMisuse, AnotherPassesPrePassProgramIsRefused) {
   const test::SceneFrame scene("builtin:default", kWidth, kHeight);
   RsaaSettings bits8, bits32, jittered, records;
   bits32.code_bits = 32;
-  records.prepass = "records";
+  jittered.prepass = "jittered", records.prepass = "records";
   const struct {
     const char* name;
     RsaaSettings pass, program;

@@ -82,8 +82,9 @@ TEST_F(Runtime, EveryRegisteredTechniqueMakesItselfAndRendersAFrame) {
 TEST_F(Runtime, RsaaMemoryCountsEveryBufferItKeeps) {
   const int w = 40, h = 30;
   const double list = 4.0 + 16.0 / (w * h);
+  // d3d8x's jittered pre-pass: the codes and one depth.
   RsaaSettings settings;
-  settings.material_edges = true;
+  settings.prepass = "jittered", settings.material_edges = true;
   EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 24 + 8 + 4 + list + 8);
   settings.post = "edges";
   EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 24 + 8 + 4 + 2);
@@ -101,10 +102,15 @@ TEST_F(Runtime, RsaaMemoryCountsEveryBufferItKeeps) {
   EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 24 + 4 + 4 * 12 + list + 8);
   multisample.material_edges = false, multisample.post = "single";
   EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 20 + 4 + 4 * 12 + list);
-  // d3d8x's jittered draws writing records: the same per subsample, in layers.
+  // d3d8x's jittered draws writing records: the same per subsample, in layers; "auto"'s choice
+  // for d3d8x on a driver without 8x MSAA (as here), and within its budget.
   RsaaSettings records;
   records.prepass = "records", records.material_edges = true;
   EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 12 + list + 8);
+  records.prepass = "auto";
+  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 12 + list + 8);
+  records.auto_records_max_bytes = 0;
+  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 4 + list + 8);
 }
 
 TEST_F(Runtime, DriverPatternMatchesTheCheckedInGl4xTable) {

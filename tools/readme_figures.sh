@@ -71,16 +71,16 @@ cost_steps() {
   step "the culled pre-pass at 1280x720" prepass-cull.md
   $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
     --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-    --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me cull" \
+    --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me cull" \
     --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
   step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)" prepass-union.md
   { for t in custom-gl4x-union d3d8x gl4x; do $rsaa eval-table tables/$t.json 2>/dev/null; done
     $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
-      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
+      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me" \
       --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
   step "how cost grows: image size, triangles, lights" growth.md
   $rsaa bench --growth --out-dir "$out/growth" \
-    --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
+    --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
     --table tables/custom-gl4x-union.json --table-prepass msaa >"$out/growth.md"
   for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
   step "bench" bench.md

@@ -78,9 +78,10 @@ std::vector<TechniqueOptions> default_techniques() {
   // RSAA 4x with the jittered pre-pass (a draw per subsample), beside the default, which is the
   // one-draw multisample pre-pass where the driver samples gl4x (same masks).
   rsaa_with(4, [](TechniqueOptions& o) { o.prepass = "jittered"; });
-  // RSAA 8x with its jittered draws writing surface records, the codes made after as the
-  // multisample pre-pass makes them (the same masks up to float ties).
-  rsaa_with(8, [](TechniqueOptions& o) { o.prepass = "records"; });
+  // RSAA 8x with the jittered pre-pass (a draw per subsample computing its codes), beside the
+  // default on this driver, the same draws writing surface records whose codes the record passes
+  // make (the same masks up to float ties).
+  rsaa_with(8, [](TechniqueOptions& o) { o.prepass = "jittered"; });
   list.push_back(rsaa_default_without_extensions());
   // The defaults' post-process in one pass over every pixel, beside the two-pass one (same image).
   rsaa_with(8, [](TechniqueOptions& o) { o.post = "single"; });

@@ -242,7 +242,7 @@ Action add_bench_command(CLI::App& app) {
                   "Also bench RSAA (default options) with this offset table file (JSON), e.g. a scene-specific one "
                   "(with --growth too)");
   cmd->add_option("--table-prepass", args->table_prepass,
-                  "Pre-pass of the --table row: auto (msaa where the driver can), jittered, msaa (one "
+                  "Pre-pass of the --table row: auto (msaa where the driver can, else records), jittered, msaa (one "
                   "multisample draw, or two for a union pattern such as tables/custom-gl4x-union.json) or both "
                   "(a jittered and an msaa row)")
       ->capture_default_str();

@@ -38,7 +38,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "rsaa: an offset table file (JSON: rsaa train, train --from-scene, a custom pattern) "
                   "instead of the built-in table; the pre-pass samples the table's positions");
   cmd->add_option("--prepass", o.prepass,
-                  "rsaa pre-pass: auto (msaa where the driver can, else jittered) | jittered (one draw per "
+                  "rsaa pre-pass: auto (msaa where the driver can, else records while they fit 256 MiB, else "
+                  "jittered) | jittered (one draw per "
                   "subsample) | msaa (one multisample draw writing surface records, then two compute passes "
                   "making the codes; where the driver samples the table's positions, or two draws, the second "
                   "shifted, for a union pattern such as tables/custom-gl4x-union.json) | records (one draw per "
