@@ -135,8 +135,12 @@ TEST_F(RsaaPassApi, AnEnginesOwnShadersGiveThePassProgramsMasks) {
   RsaaSettings multisample_material = multisample, records_material = material;
   multisample_material.material_edges = true;
   records_material.prepass = "records";
+  RsaaSettings jittered;  // the defaults ("auto") take records for d3d8x on a 4-sample driver
+  jittered.prepass = "jittered";
   for (const auto& [scene, settings] : {std::pair{"builtin:default", RsaaSettings{}},
                                         std::pair{"builtin:edges", RsaaSettings{}},
+                                        std::pair{"builtin:default", jittered},
+                                        std::pair{"builtin:edges", jittered},
                                         std::pair{"builtin:default", multisample},
                                         std::pair{"builtin:coplanar", material},
                                         std::pair{"builtin:coplanar", multisample_material},
