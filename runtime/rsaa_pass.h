@@ -204,9 +204,9 @@ struct RsaaSettings {
   // pattern, the same masks as "jittered" up to float ties (the records round the face normal to
   // 2 x 16 bits), more memory (12 bytes a subsample, see auto_records_max_bytes). "auto"
   // (default): "msaa" where the driver can; else "records" while its records fit in
-  // auto_records_max_bytes (d3d8x on a 4-sample driver: the frame 20-40% cheaper than
-  // "jittered" on ten of the bench's eleven scenes, about 10% dearer on the spider, which covers
-  // little of the image; README, *Jittered draws writing records*); else "jittered" (and
+  // auto_records_max_bytes (d3d8x on a 4-sample driver: frames 8-41% cheaper than "jittered" on
+  // the bench's eleven scenes at 640x480; at 1280x720 the pre-pass of the spider, which covers
+  // little of the image, 11% dearer; README, *Jittered draws writing records*); else "jittered" (and
   // "jittered" with prepass_cull). RsaaPass::prepass_in_use() tells which.
   std::string prepass = "auto";
   // The most GL memory "auto" gives the records of "records" (subsamples x 12 bytes a pixel: 8x at
