@@ -339,18 +339,23 @@ TEST(GeneratedShaders, RsaaShadersWritesSelfContainedFilesThatCompile) {
   EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
 }
 
-// With the multisample pre-pass the files include its record passes (which turn the draw's
-// records into the codes the post-process reads, as RsaaPass does) and the HLSL post-process (one
-// code layout for both pre-passes); every file compiles, material edges on and off.
-TEST(GeneratedShaders, TheMultisamplePrePassFilesIncludeItsRecordPasses) {
+// With the multisample pre-pass, and with the jittered draws writing records (what RsaaPass's
+// "auto" runs for d3d8x on a 4-sample driver), the files include the record passes (which turn
+// the draws' records into the codes the post-process reads, as RsaaPass does) and the HLSL
+// post-process (one code layout for every pre-pass); every file compiles, material edges on and
+// off.
+TEST(GeneratedShaders, ThePrePassesWritingRecordsComeWithTheirRecordPasses) {
+  for (const auto& [options, define] : {std::pair{" --pattern gl4x --prepass msaa", "#define RSAA_PREPASS_MSAA\n"},
+                                        std::pair{" --pattern d3d8x --prepass records", "#define RSAA_PREPASS_RECORDS\n"}})
   for (const char* material_edges : {"off", "on"}) {
+    SCOPED_TRACE(std::string(options) + ", material edges " + material_edges);
     test::TempDir dir;
-    const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + " --pattern gl4x --prepass msaa" +
-                                  " --material-edges " + material_edges);
+    const auto r = test::run_rsaa("shaders --out-dir " + dir.file("out") + options + " --material-edges " + material_edges);
     ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(test::read_text(dir.file("out/rsaa_prepass.glsl")).find(define), std::string::npos);
     for (const char* name : {"rsaa_prepass_list.comp", "rsaa_prepass_codes.comp", "rsaa_post_list_size.comp"}) {
       const std::string text = test::read_text(dir.file(std::string("out/") + name));
-      EXPECT_NE(text.find("#define RSAA_PREPASS_MSAA\n"), std::string::npos) << name;
+      EXPECT_NE(text.find(define), std::string::npos) << name;
       EXPECT_NE(text.find("#define RSAA_SUBSAMPLE_WINDOWS vec2[]("), std::string::npos) << name;
       EXPECT_EQ(glslang_errors("comp", text), "") << name << ", material edges " << material_edges;
     }
