@@ -148,7 +148,8 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
   for (const std::string& spec : o.scenes) {
     const Scene loaded = load_scene_within(spec, 120.0);
     const Camera start = choose_camera(loaded, std::nullopt);
-    const Scene scene = with_lights(loaded, start, o.lights);
+    Scene scene = with_lights(loaded, start, o.lights);
+    scene.texture_anisotropy = o.texture_anisotropy;
     const GpuScene gpu(scene);
     std::vector<Camera> cameras;
     for (int f = 0; f < o.orbit_frames; ++f) cameras.push_back(orbit_camera(start, f * o.orbit_degrees_per_frame));

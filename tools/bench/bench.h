@@ -10,6 +10,7 @@
 
 #include "image/image_io.h"
 #include "runtime/pass_timer.h"
+#include "runtime/scene.h"
 #include "runtime/technique_registry.h"
 
 namespace rsaa::bench {
@@ -20,6 +21,7 @@ struct BenchOptions {
   int width = 640, height = 480;
   int frames = 5;        // timed frames per technique (after one warm-up frame)
   int lights = 1;        // the fixed light plus lights - 1 point lights (growth.h: with_lights)
+  float texture_anisotropy = kDefaultTextureAnisotropy;  // Scene::texture_anisotropy of every scene
   int orbit_frames = 4;  // frames of the camera animation for the temporal metrics
   double orbit_degrees_per_frame = 0.25;
   // When set, one side-by-side crop image per scene is written here (crops-<scene>.png).

@@ -97,7 +97,8 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
   for (const auto& [w, h] : o.sizes) validate_size(w, h);
   validate_size(o.width, o.height);
   for (const TechniqueOptions& t : o.techniques) validate(t);
-  const Scene scene = load_scene_within(o.scene, 120.0);
+  Scene scene = load_scene_within(o.scene, 120.0);
+  scene.texture_anisotropy = o.texture_anisotropy;
   const Camera camera = choose_camera(scene, std::nullopt);
   GrowthResults results;
   results.scene = scene.name;

@@ -28,6 +28,7 @@ struct GrowthOptions {
   int width = 640, height = 480;                    // the size of the triangle and light series
   std::vector<int> light_counts;                     // empty: no light series
   int frames = 3;
+  float texture_anisotropy = kDefaultTextureAnisotropy;  // Scene::texture_anisotropy
 };
 
 enum class GrowthAxis { Pixels, Triangles, Lights };

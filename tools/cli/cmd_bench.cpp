@@ -29,6 +29,7 @@ struct BenchArgs {
   std::string from_json;
   bool growth = false;
   std::string lights;
+  float anisotropy = kDefaultTextureAnisotropy;
   // Which of the options --quick sets were given: those keep their value (--quick used to
   // replace them without a word: --quick --width 99999 ran at 160x120).
   bool width_given = false, height_given = false, frames_given = false, orbit_frames_given = false;
@@ -115,6 +116,7 @@ int run_growth_command(const BenchArgs& a) {
     o.width = a.width, o.height = a.height, o.frames = a.frames;
   }
   if (!a.lights.empty()) o.light_counts = light_counts(a.lights);
+  o.texture_anisotropy = a.anisotropy;
   if (!a.scenes.empty()) {
     const auto scenes = split(a.scenes);
     if (scenes.size() != 1) throw std::invalid_argument("--growth measures one scene: give one in --scenes");
@@ -170,6 +172,7 @@ int run_bench_command(BenchArgs a) {
   if (!a.techniques.empty()) o.techniques = keep_techniques(o.techniques, a.techniques);
   add_table_rows(a, o.techniques);
   o.width = a.width, o.height = a.height, o.frames = a.frames, o.orbit_frames = a.orbit_frames;
+  o.texture_anisotropy = a.anisotropy;
   if (!a.lights.empty()) {
     const auto lights = light_counts(a.lights);
     if (lights.size() != 1) throw std::invalid_argument("--lights: one count, or a list with --growth");
@@ -265,13 +268,14 @@ Action add_bench_command(CLI::App& app) {
   cmd->add_option("--lights", args->lights,
                   "Shade with the fixed light plus N - 1 point lights (default 1: the fixed light only); "
                   "with --growth a comma-separated list of N");
+  add_anisotropy_option(cmd, args->anisotropy);
   cmd->add_option("--from-json", args->from_json,
                   "Report and plot a previous run's bench.json again instead of measuring");
   return [args, cmd] {
     // A redraw takes everything from the file: a measuring option beside it would be ignored.
     if (!args->from_json.empty())
       for (const char* option : {"--growth", "--quick", "--scenes", "--techniques", "--table", "--table-prepass",
-                                 "--width", "--height", "--frames", "--orbit-frames", "--lights"})
+                                 "--width", "--height", "--frames", "--orbit-frames", "--lights", "--anisotropy"})
         if (cmd->count(option) > 0)
           throw std::invalid_argument(std::string("--from-json redraws a measured run as it was: ") + option +
                                       " belongs to a measurement; leave it out");

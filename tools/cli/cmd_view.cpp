@@ -18,6 +18,7 @@
 #include "runtime/scene.h"
 #include "runtime/scene_renderer.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/options.h"
 #include "tools/cli/technique_options.h"
 
 namespace rsaa::cli {
@@ -30,6 +31,7 @@ struct ViewArgs {
   std::string camera;
   std::string screenshot = "rsaa-view-%d.png";
   std::string keys;
+  float anisotropy = kDefaultTextureAnisotropy;
 };
 
 // The screenshot file name: "%d" is the screenshot's number, "%%" a '%'. Expanded here, never
@@ -160,7 +162,8 @@ int run_view(const ViewArgs& a) {
   screenshot_name(a.screenshot, 1);  // refuses a bad pattern before any window opens
   for (char c : a.keys)
     if (c != ' ' && c != ',') key_of(c);
-  const Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
+  Scene scene = load_scene_within(a.scene, kSceneLoadSeconds);
+  scene.texture_anisotropy = a.anisotropy;
   std::optional<Camera> requested;
   if (!a.camera.empty()) requested = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   fit_llvmpipe_threads_to_process_limit(5);  // see runtime/gl_context.cpp
@@ -218,6 +221,7 @@ Action add_view_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--keys", args->keys,
                   "Press these keys one per frame, then quit (e.g. \"6P2PQ\"); for scripted runs");
+  add_anisotropy_option(cmd, args->anisotropy);
   return [args] { return run_view(*args); };
 }
 
