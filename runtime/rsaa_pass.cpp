@@ -249,6 +249,47 @@ bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector
   return true;
 }
 
+// Whether the driver can run the pre-pass as one m-sample draw at `cells` times the image's size
+// (columns, rows) for an n = m x columns x rows subsample `pattern` whose subsample i is the
+// driver's sample i % m in cell i / m of the pixel (cells numbered row by row from the top-left,
+// pixel space): each cell a raster pixel of the draw (a cell pattern, such as
+// tables/custom-gl4x-wide.json: 8 subsamples from one 4x draw at twice the width). Sets `cells`
+// and `offsets` (per subsample, its cell's raster pixel relative to the pixel's lower-left cell,
+// window space). Cells of 2 x 1, 1 x 2 and 2 x 2 are tried; a draw beyond the driver's
+// framebuffer or viewport size is not offered.
+bool driver_samples_cells(const SamplePattern& pattern, int width, int height, glm::ivec2& cells,
+                          std::vector<glm::ivec2>& offsets) {
+  GLint max_samples = 0, max_integer_samples = 0, max_size[2] = {}, max_framebuffer[2] = {}, max_texture = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_size);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &max_framebuffer[0]);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &max_framebuffer[1]);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const int n = pattern.size();
+  for (const glm::ivec2 c : {glm::ivec2(2, 1), glm::ivec2(1, 2), glm::ivec2(2, 2)}) {
+    const int m = n / (c.x * c.y);
+    if (n % (c.x * c.y) != 0 || m < 2 || m > max_samples || m > max_integer_samples) continue;
+    const std::int64_t raster_w = std::int64_t(width) * c.x, raster_h = std::int64_t(height) * c.y;
+    if (raster_w > std::min({max_size[0], max_framebuffer[0], max_texture}) ||
+        raster_h > std::min({max_size[1], max_framebuffer[1], max_texture}) || !driver_has_sample_count(m))
+      continue;
+    const SamplePattern driver = query_gl_sample_pattern(m);
+    std::vector<glm::ivec2> found;
+    for (int i = 0; i < n; ++i) {
+      const int cell = i / m, column = cell % c.x, row = cell / c.x;  // row 0: the top (pixel space, +y down)
+      const Vec2 d = driver.positions[std::size_t(i % m)];
+      const Vec2 expected = {(column + 0.5 + d.x) / c.x - 0.5, (row + 0.5 + d.y) / c.y - 0.5};
+      if (length(expected - pattern.positions[std::size_t(i)]) > 1e-6) break;
+      found.push_back({column, c.y - 1 - row});
+    }
+    if (int(found.size()) != n) continue;
+    cells = c, offsets = found;
+    return true;
+  }
+  return false;
+}
+
 GLenum code_format(int bits) {
   switch (bits) {
     case 8: return GL_RGBA8UI;
@@ -446,7 +487,7 @@ SamplePattern query_gl_sample_pattern(int samples) {
 }
 
 std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
-                                bool union_pattern) {
+                                bool union_pattern, glm::ivec2 cells) {
   std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(sample_count) + "\n" +
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
                         "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n" +
@@ -456,6 +497,9 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
   else if (settings.prepass == "records") defines += "#define RSAA_PREPASS_RECORDS\n";
   if (multisample_prepass && union_pattern)
     defines += "#define RSAA_PREPASS_MSAA_UNION\n#define RSAA_MS_SAMPLES " + std::to_string(sample_count / 2) + "\n";
+  else if (multisample_prepass && cells != glm::ivec2(1, 1))
+    defines += "#define RSAA_PREPASS_MSAA_CELLS ivec2(" + std::to_string(cells.x) + ", " + std::to_string(cells.y) +
+               ")\n#define RSAA_MS_SAMPLES " + std::to_string(sample_count / (cells.x * cells.y)) + "\n";
   if (settings.similarity == "depth") defines += "#define RSAA_SIMILARITY_DEPTH\n";
   else if (settings.similarity == "sadp-plane") defines += "#define RSAA_SIMILARITY_SADP_PLANE\n";
   else if (settings.similarity != "sadp")
@@ -549,14 +593,15 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   const bool auto_may_list = settings.prepass == "auto" && !cull_ && width <= 65536 && height <= 65536;
   const bool may_multisample = settings.prepass == "msaa" || auto_may_list;
   multisample_ = may_multisample && driver_samples_pattern(pattern_);
-  std::vector<glm::ivec2> union_raster;
+  std::vector<glm::ivec2> union_raster, cell_offsets;
+  if (may_multisample && !multisample_) multisample_ = driver_samples_cells(pattern_, width, height, cells_, cell_offsets);
   if (may_multisample && !multisample_) {
     multisample_ = union_ = driver_samples_union(pattern_, union_shift_, union_raster);
     if (!multisample_ && settings.prepass == "msaa")
       throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
                                   "-sample integer target at the positions of pattern '" + pattern_.name + "'" +
-                                  (n % 2 == 0 && n >= 4 ? ", nor two " + std::to_string(n / 2) +
-                                                              "-sample draws whose union they are"
+                                  (n % 2 == 0 && n >= 4 ? ", nor fewer-sample draws at a multiple of the image's "
+                                                          "size, or two whose union they are"
                                                         : ""));
   }
   if (auto_may_list && !multisample_ && record_units_fit(settings.prepass_first_unit) &&
@@ -566,10 +611,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   }
   for (int k = 0; k < (n + 3) / 4; ++k) gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
   if (multisample_) {
-    const int m = union_ ? n / 2 : n;
+    const int m = raster_samples();
+    const glm::ivec2 raster = raster_size();
     const auto make_draw_target = [&](gl::Texture& records, gl::Texture& depth) {
-      records = gl::make_texture_2d_multisample(GL_RG32UI, width, height, m);
-      depth = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, width, height, m);
+      records = gl::make_texture_2d_multisample(GL_RG32UI, raster.x, raster.y, m);
+      depth = gl::make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, raster.x, raster.y, m);
       return gl::make_framebuffer({{records.get()}}, {depth.get()});
     };
     gl_->multisample_target = make_draw_target(gl_->records, gl_->record_depths);
@@ -597,13 +643,14 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     const glm::ivec2 step = window_step(pattern_.positions[i]);
     entry[0] = step.x, entry[1] = step.y;
     if (union_ && i >= n / 2) entry[2] = union_raster[i - n / 2].x, entry[3] = union_raster[i - n / 2].y;
+    if (!cell_offsets.empty()) entry[2] = cell_offsets[std::size_t(i)].x, entry[3] = cell_offsets[std::size_t(i)].y;
   }
   GLuint buffer = 0;
   glCreateBuffers(1, &buffer);
   gl_->uniforms = gl::Buffer(buffer);
   glNamedBufferStorage(buffer, GLsizeiptr(block.size() * 4), block.data(), GL_DYNAMIC_STORAGE_BIT);
 
-  const std::string defines = rsaa_shader_defines(settings_, n, multisample_, union_);
+  const std::string defines = rsaa_shader_defines(settings_, n, multisample_, union_, cells_);
   gl_->subsample_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                              {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
                                              {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
@@ -657,7 +704,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     GLint image_samples = 0, image_units = 0;
     glGetIntegerv(GL_MAX_IMAGE_SAMPLES, &image_samples);
     glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_units);
-    make_record_programs((layered_ || image_samples >= (union_ ? n / 2 : n)) &&
+    make_record_programs((layered_ || image_samples >= raster_samples()) &&
                          kFirstCodeImageUnit + int(gl_->codes.size()) + kRecordImages <= image_units);
   }
   if (settings.post == "compute") {
@@ -700,7 +747,7 @@ RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;
 std::string RsaaPass::prepass_glsl() const {
   require_not_moved_from(gl_.get(), "RsaaPass::prepass_glsl");
   return "// RSAA pre-pass for pattern " + pattern_.name + " (generated by RsaaPass::prepass_glsl)\n" +
-         rsaa_prepass_text(rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_));
+         rsaa_prepass_text(rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_, cells_));
 }
 
 std::vector<GlName> RsaaPass::code_textures() const {
@@ -723,7 +770,7 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
 // The record passes' programs, reading the records as images or (a driver without multisample
 // image loads of that many samples) as textures.
 void RsaaPass::make_record_programs(bool record_images) {
-  std::string defines = rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_) +
+  std::string defines = rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_, cells_) +
                         rsaa_record_pass_defines(pattern_, record_first_unit(settings_.prepass_first_unit),
                                                  kFirstCodeImageUnit, kEdgeListBinding);
   gl_->record_images = record_images;
@@ -814,8 +861,9 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
   // Each draw goes into the framebuffer and viewport the pass has just set: a callback that binds
   // or sets its own draws elsewhere, and the codes would be the last frame's, silently.
   const auto checked_draw = [&](int subsample, glm::vec2 jitter) {
-    GLint framebuffer = 0;
+    GLint framebuffer = 0, set[4] = {};
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_VIEWPORT, set);
     draw(subsample, jitter);
     GLint after = 0, viewport[4] = {};
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &after);
@@ -823,11 +871,12 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
     if (after != framebuffer)
       throw std::logic_error("RSAA pre-pass: the draw callback bound framebuffer " + std::to_string(after) +
                              "; it must draw into the one the pass bound (" + std::to_string(framebuffer) + ")");
-    if (viewport[0] != 0 || viewport[1] != 0 || viewport[2] != frame.width || viewport[3] != frame.height)
+    if (!std::equal(viewport, viewport + 4, set))
       throw std::logic_error("RSAA pre-pass: the draw callback set the viewport to " + std::to_string(viewport[0]) +
                              "," + std::to_string(viewport[1]) + " " + std::to_string(viewport[2]) + "x" +
                              std::to_string(viewport[3]) + "; the pass draws the frame's 0,0 " +
-                             std::to_string(frame.width) + "x" + std::to_string(frame.height));
+                             std::to_string(set[2]) + "x" + std::to_string(set[3]) +
+                             (set[2] != frame.width || set[3] != frame.height ? " (its cells: a multiple of the image)" : ""));
   };
   const auto write_per_draw = [&](glm::vec2 jitter, int subsample, Vec2 sample_shift) {
     const RsaaUniformPerDraw per_draw = {
@@ -841,7 +890,7 @@ void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int 
       glClearNamedFramebufferuiv(fb, GL_COLOR, 0, zero);
       glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
       glBindFramebuffer(GL_FRAMEBUFFER, fb);
-      glViewport(0, 0, frame.width, frame.height);
+      glViewport(0, 0, raster_size().x, raster_size().y);  // a cell pattern's draw: a multiple of the image
       set_depth_state();
       // A record is the triangle's, whichever sample: shading once per pixel writes it to every
       // covered sample (the depth buffer holds each sample's own depth).
@@ -998,6 +1047,7 @@ std::string rsaa_prepass_signature(const std::string& defines) {
   static const char* const kPrePassDefines[] = {
       "RSAA_SAMPLE_COUNT",     "RSAA_CODE_BITS",         "RSAA_PREPASS_FIRST_UNIT", "RSAA_UNIFORM_BINDING",
       "RSAA_PREPASS_MSAA",     "RSAA_PREPASS_RECORDS",   "RSAA_PREPASS_MSAA_UNION", "RSAA_MS_SAMPLES",
+      "RSAA_PREPASS_MSAA_CELLS",
       "RSAA_SIMILARITY_DEPTH", "RSAA_SIMILARITY_SADP_PLANE", "RSAA_DEPTH_ZERO_TO_ONE", "RSAA_MATERIAL_EDGES"};
   std::string read;
   std::istringstream lines(defines);
@@ -1022,7 +1072,7 @@ std::string rsaa_prepass_text(const std::string& defines) {
 
 const std::string& RsaaPass::prepass_signature() const {
   if (prepass_signature_.empty())  // once: the engine's program is checked after every draw
-    prepass_signature_ = rsaa_prepass_signature(rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_));
+    prepass_signature_ = rsaa_prepass_signature(rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_, cells_));
   return prepass_signature_;
 }
 

@@ -58,7 +58,8 @@
 // (shaders/rsaa_prepass.glsl documents them; rsaa_face_normal(view_position) gives the face
 // normal from derivatives.) The callback binds that program and its vertex arrays and draws the
 // frame's geometry; it is called once per subsample (jittered pre-pass and "records") or once
-// (multisample; twice for a union pattern), so draw the whole frame in every call. With the
+// (multisample; twice for a union pattern), so draw the whole frame in every call, into the
+// viewport the pass set (a cell pattern's multisample draw is a multiple of the image). With the
 // multisample or "records" pre-pass and material_edges the record keeps the primitive's low 24
 // bits and the material's low 8 (materials numbered below 256 compare exactly;
 // docs/conventions.md). Before each call the pass binds its framebuffer, the viewport, the
@@ -196,7 +197,11 @@ struct RsaaSettings {
   // (gl4x on Mesa llvmpipe; d3d8x on GPUs whose 8x is the standard pattern), or, for a table of
   // 2m subsamples that are the driver's m positions and the same shifted by one sub-pixel offset
   // (a union pattern, such as tables/custom-gl4x-union.json), draws twice into m-sample targets,
-  // the second shifted; refused where the driver can do neither. Its masks equal the jittered
+  // the second shifted; for a cell pattern (the driver's m positions in each of 2 x 1, 1 x 2 or
+  // 2 x 2 cells of the pixel, such as tables/custom-gl4x-wide.json and custom-gl4x-tall.json:
+  // 8 subsamples) draws once into m-sample targets that many times the image's size, each cell
+  // a raster pixel (the callback draws into the viewport the pass set: do not set your own);
+  // refused where the driver can do none of these. Its masks equal the jittered
   // pre-pass's (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's
   // outermost pixels) at about half its cost for 4 subsamples on llvmpipe (README, *The
   // multisample pre-pass*). "records": the jittered draws, each writing the surface records (into
@@ -248,7 +253,7 @@ struct RsaaSettings {
 // `sample_count` subsamples and the jittered or the multisample pre-pass (for a union pattern:
 // two draws of half the samples, see RsaaSettings::prepass). Needs no GL.
 std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
-                                bool union_pattern = false);
+                                bool union_pattern = false, glm::ivec2 cells = {1, 1});
 // The first of the record passes' four texture units (records and depths of each draw) beside
 // the pre-pass's three from `prepass_first_unit`: 0, or after those three when they start below 4.
 int rsaa_record_first_unit(int prepass_first_unit);
@@ -389,6 +394,11 @@ class RsaaPass {
   bool writes_records() const { return multisample_ || layered_; }
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
+  // The multisample draw's raster pixels a pixel (columns, rows): 1 x 1, or a cell pattern's.
+  glm::ivec2 cells_{1, 1};
+  glm::ivec2 raster_size() const { return {width_ * cells_.x, height_ * cells_.y}; }
+  // Samples a raster pixel of the multisample draw(s) has.
+  int raster_samples() const { return pattern_.size() / (union_ ? 2 : cells_.x * cells_.y); }
   bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
   mutable std::string prepass_signature_;  // prepass_signature(), made at its first call
   GlName prepass_frame_[3] = {};  // its frame's centre_normal, centre_primitive, centre_depth

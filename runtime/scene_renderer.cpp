@@ -24,12 +24,17 @@ SceneRenderer::SceneRenderer()
 
 void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program,
                          GLenum depth_func) {
+  glViewport(0, 0, view.width, view.height);
+  draw_in_current_viewport(scene, view, jitter_ndc, program, depth_func);
+}
+
+void SceneRenderer::draw_in_current_viewport(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc,
+                                             GLuint program, GLenum depth_func) {
   glUseProgram(program);
   glUniformMatrix4fv(glGetUniformLocation(program, "u_view"), 1, GL_FALSE, glm::value_ptr(view.view));
   glUniformMatrix4fv(glGetUniformLocation(program, "u_projection"), 1, GL_FALSE,
                      glm::value_ptr(view.projection));
   glUniform2f(glGetUniformLocation(program, "u_jitter_ndc"), jitter_ndc.x, jitter_ndc.y);
-  glViewport(0, 0, view.width, view.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(depth_func);
   scene.draw(program);

@@ -21,6 +21,10 @@ class SceneRenderer {
   // reverse Z). The caller binds the framebuffer.
   static void draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program,
                    GLenum depth_func = GL_LESS);
+  // The same into the viewport the caller has set: RsaaPass's pre-pass callbacks, whose viewport
+  // the pass sets (a multiple of the image for a cell pattern's draw).
+  static void draw_in_current_viewport(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program,
+                                       GLenum depth_func = GL_LESS);
 
   GLuint shade_program() const { return shade_.get(); }
   // The 1x frame RSAA post-processes: clears `targets` and draws the scene into them with the

@@ -12,8 +12,9 @@
 // the listed pixels only.
 //
 // Defines expected before inclusion, beside rsaa_prepass.glsl's:
-//   RSAA_PREPASS_MSAA, RSAA_PREPASS_MSAA_UNION + RSAA_MS_SAMPLES (a union pattern), or
-//   RSAA_PREPASS_RECORDS
+//   RSAA_PREPASS_MSAA, RSAA_PREPASS_MSAA_UNION + RSAA_MS_SAMPLES (a union pattern),
+//   RSAA_PREPASS_MSAA_CELLS + RSAA_MS_SAMPLES (a cell pattern: one draw at a multiple of the
+//   image's size, ivec2(columns, rows) raster pixels a pixel), or RSAA_PREPASS_RECORDS
 //   RSAA_RECORD_FIRST_UNIT   texture units: records, depths, (union) the shifted draw's
 //   RSAA_RECORD_CODE_IMAGES  first image unit of the code images (ceil(RSAA_SAMPLE_COUNT / 4))
 //   RSAA_RECORD_IMAGES       (optional) first image unit of the records, read as
@@ -58,7 +59,7 @@ layout(binding = RSAA_RECORD_FIRST_UNIT + 3) uniform RSAA_RECORD_SAMPLER rsaa_re
 #ifdef RSAA_RECORD_IMAGES
 layout(binding = RSAA_RECORD_IMAGES, rg32ui) uniform readonly RSAA_RECORD_UIMAGE rsaa_record_images[2];
 #endif
-#ifndef RSAA_PREPASS_MSAA_UNION
+#if !defined(RSAA_PREPASS_MSAA_UNION) && !defined(RSAA_PREPASS_MSAA_CELLS)
 #define RSAA_MS_SAMPLES RSAA_SAMPLE_COUNT
 #endif
 layout(binding = RSAA_RECORD_CODE_IMAGES, RSAA_CODE_IMAGE_FORMAT) uniform writeonly uimage2D
@@ -79,6 +80,11 @@ const vec2 rsaa_subsample_window[RSAA_SAMPLE_COUNT] = RSAA_SUBSAMPLE_WINDOWS;
 // counts as the centre's surface (code 1), as no pixel reads it.
 bool rsaa_record_at(ivec2 pixel, int i, out ivec2 raster, out int sample_index) {
   raster = pixel, sample_index = i;
+#ifdef RSAA_PREPASS_MSAA_CELLS
+  // The pixel's cells are raster pixels of the one draw: subsample i is sample i % RSAA_MS_SAMPLES
+  // of the cell rsaa_neighbours[i].zw (window space) from the pixel's lower-left cell.
+  raster = pixel * RSAA_PREPASS_MSAA_CELLS + rsaa_neighbours[i].zw, sample_index = i % RSAA_MS_SAMPLES;
+#endif
 #ifdef RSAA_PREPASS_MSAA_UNION
   if (i >= RSAA_MS_SAMPLES) {
     raster = pixel + rsaa_neighbours[i].zw, sample_index = i - RSAA_MS_SAMPLES;
@@ -90,7 +96,11 @@ bool rsaa_record_at(ivec2 pixel, int i, out ivec2 raster, out int sample_index) 
 
 uvec2 rsaa_record(int i, ivec2 raster, int sample_index) {
 #ifdef RSAA_RECORD_IMAGES
+#ifdef RSAA_PREPASS_MSAA_UNION
   return RSAA_RECORD_LOAD(rsaa_record_images[i < RSAA_MS_SAMPLES ? 0 : 1], raster, sample_index).xy;
+#else
+  return RSAA_RECORD_LOAD(rsaa_record_images[0], raster, sample_index).xy;
+#endif
 #else
 #ifdef RSAA_PREPASS_MSAA_UNION
   if (i >= RSAA_MS_SAMPLES) return RSAA_RECORD_FETCH(rsaa_records2, raster, sample_index).xy;

@@ -28,7 +28,8 @@ layout(std140, binding = RSAA_UNIFORM_BINDING) uniform RsaaUniforms {
   // each coordinate rounded half away from zero, then y negated (core's outside_pixel_towards;
   // (1, 0) for a subsample at the centre);
   // .zw, union pattern, shifted subsamples: the raster pixel whose sample saw subsample i of a
-  // pixel, relative to that pixel (window space).
+  // pixel, relative to that pixel (window space); cell pattern: the cell (raster pixel) whose
+  // sample saw subsample i, relative to the pixel's lower-left cell (window space).
   ivec4 rsaa_neighbours[RSAA_SAMPLE_COUNT];
 };
 

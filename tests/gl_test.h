@@ -52,7 +52,7 @@ struct SceneFrame {
   // The pass's pre-pass with its own program, drawing this scene.
   void render_subsamples(RsaaPass& pass) const {
     pass.render_subsamples(frame(), [&](unsigned program, glm::vec2 jitter) {
-      SceneRenderer::draw(gpu, view, jitter, program);
+      SceneRenderer::draw_in_current_viewport(gpu, view, jitter, program);
     });
   }
 

@@ -266,5 +266,83 @@ TEST_F(MsaaPrePass, UnionPatternAsTwoDrawsSameMasksAsJittered) {
   EXPECT_LE(c.differing, 12u);
 }
 
+// 8 subsamples from one 4x draw at a multiple of the image's size (a cell pattern: the driver's 4x
+// positions in each half of the pixel, tables/custom-gl4x-wide.json (halves side by side, a draw
+// at twice the width) and custom-gl4x-tall.json (one above the other, twice the height)): its
+// masks against the jittered pre-pass (8 draws) with the same table, the whole image (no sample
+// lies outside its pixel). Where they differ, one subsample each, the two pre-passes saw another
+// triangle at it: an edge within the rasterizer's snapping of the sample, whose grid (1/256 of a
+// raster pixel on llvmpipe) is finer along the doubled axis than the jittered draws', so more
+// pixels tie than for the union pattern above: all one subsample each, spread over the
+// subsamples. Measured at 320x240 when written: wide 25, 12 and 14 pixels on default, edges and
+// coplanar (of 7,262, 1,637 and 3,619 edge pixels), tall 29, 13 and 21; tolerance 1% of the edge
+// pixels (for 16 subsamples, below, 2%).
+TEST_F(MsaaPrePass, CellPatternAsOneDrawSameMasksAsJittered) {
+  for (const char* table : {"custom-gl4x-wide", "custom-gl4x-tall"}) {
+    RsaaSettings settings;
+    settings.table = std::make_shared<OffsetTable>(
+        read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/" + table + ".json"));
+    settings.pattern = "";
+    settings.prepass = "msaa";
+    ASSERT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass()) << table;
+    settings.prepass = "auto";  // auto takes the one draw too
+    EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).prepass_in_use(), "msaa") << table;
+    for (const char* scene : {"builtin:default", "builtin:edges"}) {
+      const MaskComparison c = compare_prepasses(scene, settings, 0);
+      EXPECT_GT(c.edges_jittered, 1000u) << table << " " << scene;
+      EXPECT_LE(c.differing, c.edges_jittered / 100) << table << " " << scene;
+    }
+    settings.material_edges = true;
+    const MaskComparison c = compare_prepasses("builtin:coplanar", settings, 0);
+    EXPECT_GT(c.edges_jittered, 1000u) << table;
+    EXPECT_LE(c.differing, c.edges_jittered / 100) << table;
+  }
+}
+
+// 16 subsamples from one 4x draw at twice the width and height (2 x 2 cells of the driver's 4x
+// positions, built from the driver's pattern; the masks do not depend on the table's offsets, so
+// the fallback rule's table serves): masks against 16 jittered draws. Measured at 320x240 when
+// written: 106 pixels on default (of 8,076 edge pixels), 28 on edges (of 1,776), one subsample
+// each but one (two); tolerance 2% of the edge pixels (twice the subsamples that may tie).
+TEST_F(MsaaPrePass, QuadCellPatternAsOneDrawSameMasksAsJittered) {
+  const SamplePattern driver = query_gl_sample_pattern(4);
+  SamplePattern quad{"custom-gl4x-quad", {}};
+  for (int row = 0; row < 2; ++row)
+    for (int column = 0; column < 2; ++column)
+      for (const Vec2& d : driver.positions) quad.positions.push_back({(column + 0.5 + d.x) / 2 - 0.5, (row + 0.5 + d.y) / 2 - 0.5});
+  RsaaSettings settings;
+  settings.table = std::make_shared<OffsetTable>(fallback_table(quad));
+  settings.pattern = "";
+  settings.prepass = "msaa";
+  ASSERT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass());
+  for (const char* scene : {"builtin:default", "builtin:edges"}) {
+    const MaskComparison c = compare_prepasses(scene, settings, 0);
+    EXPECT_GT(c.edges_jittered, 1000u) << scene;
+    EXPECT_LE(c.differing, c.edges_jittered / 50) << scene;
+  }
+}
+
+// A cell pattern's draw beyond what the driver can hold (twice the width past its largest
+// framebuffer) is not offered: "msaa" is refused naming the pattern, "auto" takes another pre-pass.
+TEST_F(MsaaPrePass, CellPatternTooWideForTheDriverFallsBack) {
+  GLint max_width = 0;
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &max_width);
+  RsaaSettings settings;
+  settings.table = std::make_shared<OffsetTable>(
+      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-wide.json"));
+  settings.pattern = "";
+  const int width = max_width / 2 + 1;
+  settings.prepass = "auto";
+  EXPECT_NE(RsaaPass(settings, width, 1).prepass_in_use(), "msaa");
+  settings.prepass = "msaa";
+  try {
+    RsaaPass pass(settings, width, 1);
+    ADD_FAILURE() << "a " << width << "-pixel-wide cell pattern draw was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("custom-gl4x-wide"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(RsaaPass(settings, max_width / 2, 1).multisample_prepass());
+}
+
 }  // namespace
 }  // namespace rsaa

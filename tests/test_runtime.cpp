@@ -253,7 +253,7 @@ TEST_F(Runtime, TablesAtRunTime) {
   const Image one_x = read_back_image(targets.colour(), kWidth, kHeight);
   const auto resolve_with = [&](const RsaaSettings& settings) {
     RsaaPass pass(settings, kWidth, kHeight);
-    pass.render_subsamples(frame, [&](GlName program, glm::vec2 jitter) { SceneRenderer::draw(gpu, view, jitter, program); });
+    pass.render_subsamples(frame, [&](GlName program, glm::vec2 jitter) { SceneRenderer::draw_in_current_viewport(gpu, view, jitter, program); });
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
     pass.resolve(frame, output.get());
     return read_back_image(output.get(), kWidth, kHeight);
@@ -758,7 +758,7 @@ TEST_F(Runtime, NonFiniteColoursDoNotSpreadInTheGlPostProcess) {
     RsaaPass pass(settings, kWidth, kHeight);
     const RsaaFrame frame = targets.frame(view.inverse_projection());
     pass.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
-      SceneRenderer::draw(gpu, view, jitter, program);
+      SceneRenderer::draw_in_current_viewport(gpu, view, jitter, program);
     });
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
     pass.resolve(frame, output.get());

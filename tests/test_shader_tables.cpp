@@ -105,7 +105,8 @@ TEST_P(CheckedInTables, CompileAndAgreeWithTheirJson) {
   expect_hlsl_compiles(hlsl);
 }
 
-INSTANTIATE_TEST_SUITE_P(Tables, CheckedInTables, ::testing::Values("d3d4x", "d3d8x", "d3d16x", "custom-gl4x-union"));
+INSTANTIATE_TEST_SUITE_P(Tables, CheckedInTables, ::testing::Values("d3d4x", "d3d8x", "d3d16x", "custom-gl4x-union", "custom-gl4x-wide",
+                                                                "custom-gl4x-tall"));
 
 }  // namespace
 }  // namespace rsaa

@@ -27,7 +27,7 @@ class Rsaa : public Technique {
     const RsaaFrame frame = targets_.frame(view.inverse_projection());
     timer_.begin("pre-pass");
     pass_.render_subsamples(frame, [&](GLuint program, glm::vec2 jitter) {
-      SceneRenderer::draw(scene, view, jitter, program);
+      SceneRenderer::draw_in_current_viewport(scene, view, jitter, program);
     });
     timer_.end();
     timer_.begin("post-process");

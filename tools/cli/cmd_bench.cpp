@@ -246,7 +246,8 @@ Action add_bench_command(CLI::App& app) {
                   "(with --growth too)");
   cmd->add_option("--table-prepass", args->table_prepass,
                   "Pre-pass of the --table row: auto (msaa where the driver can, else records), jittered, msaa (one "
-                  "multisample draw, or two for a union pattern such as tables/custom-gl4x-union.json) or both "
+                  "multisample draw, at twice the width for a cell pattern such as tables/custom-gl4x-wide.json, or "
+                  "two for a union pattern such as tables/custom-gl4x-union.json) or both "
                   "(a jittered and an msaa row)")
       ->capture_default_str();
   cmd->add_option("--width", args->width, "Image width")->capture_default_str();

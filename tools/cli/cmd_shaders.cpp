@@ -242,7 +242,7 @@ Action add_shaders_command(CLI::App& app) {
   s.prepass = "jittered";  // files for one configuration: the engine picks what its driver can do
   cmd->add_option("--prepass", s.prepass,
                   "jittered (one draw per subsample) | msaa (one multisample draw of the table's samples, then the "
-                  "record passes; a union pattern's two draws need the rsaa::pass library, RsaaPass) | records (one "
+                  "record passes; a union or cell pattern's draws need the rsaa::pass library, RsaaPass) | records (one "
                   "draw per subsample writing surface records into the layers of array textures, then the record "
                   "passes: what RsaaPass's auto runs for a pattern the driver cannot sample, 12 bytes a subsample)")
       ->capture_default_str()

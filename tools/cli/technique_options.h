@@ -41,7 +41,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "rsaa pre-pass: auto (msaa where the driver can, else records while they fit 256 MiB, else "
                   "jittered) | jittered (one draw per "
                   "subsample) | msaa (one multisample draw writing surface records, then two compute passes "
-                  "making the codes; where the driver samples the table's positions, or two draws, the second "
+                  "making the codes; where the driver samples the table's positions, one draw at twice the width "
+                  "or height for a cell pattern such as tables/custom-gl4x-wide.json, or two draws, the second "
                   "shifted, for a union pattern such as tables/custom-gl4x-union.json) | records (one draw per "
                   "subsample writing surface records, the codes made as for msaa)")
       ->capture_default_str();
