@@ -208,14 +208,16 @@ struct RsaaSettings {
   // its own layers of array textures) instead of codes, and the same compute passes after: any
   // pattern, the same masks as "jittered" up to float ties (the records round the face normal to
   // 2 x 16 bits), more memory (12 bytes a subsample, see auto_records_max_bytes). "auto"
-  // (default): "msaa" where the driver can; else "records" while its records fit in
+  // (default): "msaa" where the driver can (a cell pattern's draw only while its records fit
+  // auto_records_max_bytes); else "records" while its records fit in
   // auto_records_max_bytes (d3d8x on a 4-sample driver: frames 8-41% cheaper than "jittered" on
   // the bench's eleven scenes at 640x480; at 1280x720 the pre-pass of the spider, which covers
   // little of the image, 11% dearer; README, *Jittered draws writing records*); else "jittered" (and
   // "jittered" with prepass_cull). RsaaPass::prepass_in_use() tells which.
   std::string prepass = "auto";
-  // The most GL memory "auto" gives the records of "records" (subsamples x 12 bytes a pixel: 8x at
-  // 1920x1080 takes 190 MiB; above this, "auto" takes "jittered", 4 bytes a pixel). 0: never.
+  // The most GL memory "auto" gives the records of "records" and of a cell pattern's multisample
+  // draw (subsamples x 12 bytes a pixel: 8x at 1920x1080 takes 190 MiB; above this, "auto" takes
+  // "jittered", 4 bytes a pixel). 0: never.
   std::int64_t auto_records_max_bytes = std::int64_t(256) << 20;
   // Culling of the jittered pre-pass (ours): "off" draws every subsample for every pixel (the
   // paper); "neighbours" first marks, once per frame, the pixels whose 3x3 neighbourhood of

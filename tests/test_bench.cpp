@@ -47,6 +47,22 @@ TEST(Bench, ParetoFrontAndCheapestTechnique) {
   EXPECT_EQ(bench::cheapest_reaching(r, "a", 50.0), nullptr);
 }
 
+// The report sets what each RSAA row adds to no AA's frame against what 4x MSAA adds (the issue's
+// cost goals are those multiples), per scene, and says nothing where a scene lacks either baseline.
+TEST(Bench, ReportsRsaasAddedCostAsAMultipleOfMsaas) {
+  std::vector<bench::TechniqueResult> r = {row("a", "noaa", 1.0, 30), row("a", "msaa 4x", 2.0, 40),
+                                           row("a", "rsaa 8x", 3.0, 41), row("b", "rsaa 8x", 3.0, 41)};
+  const double frames[] = {10.0, 30.0, 50.0, 50.0};
+  for (std::size_t i = 0; i < r.size(); ++i) r[i].frame_ms = frames[i];
+  r[2].options = r[3].options = technique_options("rsaa", 8);
+  const std::string report = bench::results_markdown(bench::BenchOptions{}, r);
+  const std::size_t from = report.find("Added cost"), to = report.find("Per scene:");
+  ASSERT_LT(from, to) << report;
+  const std::string added = report.substr(from, to - from);
+  EXPECT_NE(added.find("| a | rsaa 8x | 40.0 | 20.0 | 2.00x |"), std::string::npos) << added;
+  EXPECT_EQ(added.find("| b |"), std::string::npos) << added;  // no baselines in scene b
+}
+
 TEST(Bench, TinyRunWritesWellFormedResults) {
   gl::HeadlessContext context;
   bench::BenchOptions o;
@@ -220,6 +236,19 @@ TEST(BenchGrowth, LightCrossingIsWhereTheCheaperLineStartsBelow) {
   const auto crossings = bench::light_crossings(r);
   ASSERT_EQ(crossings.size(), 1u);
   EXPECT_EQ(crossings[0].b, "msaa 4x");
+  // The --table row (a cell or union pattern) is set against 4x MSAA as well, once.
+  for (int n : {1, 2, 4, 8, 16}) {
+    bench::GrowthPoint p;
+    p.axis = bench::GrowthAxis::Lights;
+    p.lights = n;
+    p.label = "rsaa table custom-gl4x-tall", p.frame_ms = 6.0 + n;
+    r.points.push_back(p);
+  }
+  const auto with_table = bench::light_crossings(r);
+  ASSERT_EQ(with_table.size(), 2u);
+  EXPECT_EQ(with_table[1].a, "rsaa table custom-gl4x-tall");
+  EXPECT_EQ(with_table[1].b, "msaa 4x");
+  EXPECT_NEAR(with_table[1].fitted, 3.0, 1e-9);  // 6 + N = 3N
 }
 
 TEST(BenchGrowth, TinyRunWritesEveryPoint) {

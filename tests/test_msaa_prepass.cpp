@@ -322,6 +322,23 @@ TEST_F(MsaaPrePass, QuadCellPatternAsOneDrawSameMasksAsJittered) {
   }
 }
 
+// A cell pattern's draw keeps every subsample's record, as "records" does: "auto" takes it within
+// the same budget, to the byte, and the jittered pre-pass beyond; "msaa" takes it whatever the budget.
+TEST_F(MsaaPrePass, AutoTakesACellPatternWithinTheRecordsBudget) {
+  RsaaSettings settings;
+  settings.table = std::make_shared<OffsetTable>(
+      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-tall.json"));
+  settings.pattern = "";
+  settings.auto_records_max_bytes = std::int64_t(kWidth) * kHeight * 8 * 12;
+  EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).prepass_in_use(), "msaa");
+  settings.auto_records_max_bytes -= 1;
+  EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).prepass_in_use(), "jittered");
+  settings.prepass = "msaa";
+  EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).prepass_in_use(), "msaa");
+  settings.auto_records_max_bytes = 0;
+  EXPECT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass());
+}
+
 // A cell pattern's draw beyond what the driver can hold (twice the width past its largest
 // framebuffer) is not offered: "msaa" is refused naming the pattern, "auto" takes another pre-pass.
 TEST_F(MsaaPrePass, CellPatternTooWideForTheDriverFallsBack) {

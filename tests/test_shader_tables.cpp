@@ -106,7 +106,7 @@ TEST_P(CheckedInTables, CompileAndAgreeWithTheirJson) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Tables, CheckedInTables, ::testing::Values("d3d4x", "d3d8x", "d3d16x", "custom-gl4x-union", "custom-gl4x-wide",
-                                                                "custom-gl4x-tall"));
+                                                                "custom-gl4x-tall", "custom-gl4x-quad"));
 
 }  // namespace
 }  // namespace rsaa

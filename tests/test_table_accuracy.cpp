@@ -40,7 +40,7 @@ TEST_P(CheckedInTableAccuracy, ClearlyBeatsBothBaselinesOnFreshCases) {
 
 INSTANTIATE_TEST_SUITE_P(Tables, CheckedInTableAccuracy,
                          ::testing::Values("d3d4x", "d3d8x", "d3d16x", "custom-gl4x-union", "custom-gl4x-wide",
-                                           "custom-gl4x-tall"));
+                                           "custom-gl4x-tall", "custom-gl4x-quad"));
 
 }  // namespace
 }  // namespace rsaa

@@ -1,23 +1,26 @@
 #!/usr/bin/env bash
 # 8 (and 16) subsamples on a 4-sample driver from one multisample draw: the cell patterns (the
 # driver's 4x positions in each cell of the pixel split 2 x 1 (tables/custom-gl4x-wide.json, a draw
-# at twice the width), 1 x 2 (custom-gl4x-tall.json, twice the height) or 2 x 2 (custom-gl4x-quad,
-# 16 subsamples, trained here: its table is 2.8 MB)) against d3d8x (RSAA 8x's default table), the
+# at twice the width), 1 x 2 (custom-gl4x-tall.json, twice the height) or 2 x 2
+# (custom-gl4x-quad.json, 16 subsamples, twice both)) against d3d8x (RSAA 8x's default table), the
 # union pattern (tables/custom-gl4x-union.json, two draws) and d3d16x: line-case RMS on fresh cases
 # (rsaa eval-table's mix RMS) and PSNR dB against 64x SSAA per scene with today's defaults and
 # `auto`'s pre-pass, beside hardware 4x MSAA; the last columns: each table minus d3d8x, the mean
 # over the scenes and the lowest. Writes OUT_DIR/cell-patterns.md and the renders.
-# Usage: tools/cell_patterns.sh [--width W] [--height H] [--out-dir DIR] SCENE...
-#   Default 640x480, OUT_DIR out/cell-patterns. About 20 seconds a scene.
+# Usage: tools/cell_patterns.sh [--width W] [--height H] [--cases N] [--out-dir DIR] SCENE...
+#   Default 640x480, 10^6 fresh cases for the line RMS, OUT_DIR out/cell-patterns. About 20
+#   seconds a scene. The quad table is checked: trained again from the positions of the driver's
+#   4x pattern (tables/gl4x.json), it must be the checked-in file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-width=640 height=480 out=out/cell-patterns
+width=640 height=480 out=out/cell-patterns cases=1000000
 while [[ $# -gt 0 ]]; do
   case $1 in
     --width) width=${2:?--width needs a value}; shift 2 ;;
     --height) height=${2:?--height needs a value}; shift 2 ;;
     --out-dir) out=${2:?--out-dir needs a directory}; shift 2 ;;
-    -h | --help) sed -n 2,11p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --cases) cases=${2:?--cases needs a count}; shift 2 ;;
+    -h | --help) sed -n 2,12p "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "cell_patterns.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) break ;;
   esac
@@ -28,7 +31,7 @@ source tools/scene_images.sh
 check_scenes_and_build "$@"
 mkdir -p "$out/tables"
 
-# The 2 x 2 cells of the driver's 4x positions (as tables/gl4x.json records them, pixel units,
+# The checked-in quad table is the 2 x 2 cells of the driver's 4x positions (as tables/gl4x.json records them, pixel units,
 # +y down): cell (column, row) maps position p to ((column + 0.5 + p.x) / 2 - 0.5, (row + 0.5 + p.y) / 2 - 0.5).
 driver=$(sed -n 's/.*"samples": *\[\(.*\)\],*$/\1/p' tables/gl4x.json | tr -d '[] ' | tr ',' ' ')
 [[ $(wc -w <<<"$driver") == 8 ]] || { echo "$script: tables/gl4x.json: no 4 sample positions" >&2; exit 1; }
@@ -40,16 +43,18 @@ quad_positions=$(awk -v d="$driver" 'BEGIN {
 $rsaa train --pattern custom-gl4x-quad --positions "$quad_positions" --cases 1000000 --seed 1 --fit mixed \
   --two-line-weight 0.5 --out-dir "$out/tables" >/dev/null ||
   { echo "$script: rsaa train --pattern custom-gl4x-quad failed" >&2; exit 1; }
+cmp -s "$out/tables/custom-gl4x-quad.json" tables/custom-gl4x-quad.json ||
+  { echo "$script: tables/custom-gl4x-quad.json is not the 2 x 2 cells of tables/gl4x.json's positions" >&2; exit 1; }
 
 labels=(d3d8x custom-gl4x-union custom-gl4x-wide custom-gl4x-tall custom-gl4x-quad d3d16x)
 declare -A table_file=([d3d8x]=tables/d3d8x.json [custom-gl4x-union]=tables/custom-gl4x-union.json
   [custom-gl4x-wide]=tables/custom-gl4x-wide.json [custom-gl4x-tall]=tables/custom-gl4x-tall.json
-  [custom-gl4x-quad]=$out/tables/custom-gl4x-quad.json [d3d16x]=tables/d3d16x.json)
+  [custom-gl4x-quad]=tables/custom-gl4x-quad.json [d3d16x]=tables/d3d16x.json)
 declare -A subsamples=([d3d8x]=8 [custom-gl4x-union]=8 [custom-gl4x-wide]=8 [custom-gl4x-tall]=8
   [custom-gl4x-quad]=16 [d3d16x]=16)
 declare -A rms psnrs
 for label in "${labels[@]}"; do
-  rms[$label]=$($rsaa eval-table "${table_file[$label]}" 2>/dev/null | awk '/mix cases/ {m = 1} m && $1 == "table" {print $2; exit}')
+  rms[$label]=$($rsaa eval-table "${table_file[$label]}" --cases "$cases" 2>/dev/null | awk '/mix cases/ {m = 1} m && $1 == "table" {print $2; exit}')
   [[ ${rms[$label]} =~ ^[0-9.]+$ ]] || { echo "$script: rsaa eval-table ${table_file[$label]} gave no RMS" >&2; exit 1; }
 done
 
@@ -73,7 +78,7 @@ done
   echo "${width}x$height, PSNR dB against 64x SSAA; RSAA with today's defaults, each table's pre-pass as \`auto\`"
   echo "takes it on this driver (d3d8x and d3d16x: jittered draws writing records; union: two 4x draws;"
   echo "wide, tall: one 4x draw at twice the width or height; quad: one at twice both); line RMS: mix cases,"
-  echo "\`rsaa eval-table\` on 10^6 fresh cases."
+  echo "\`rsaa eval-table\` on $cases fresh cases."
   echo
   printf '| table | subsamples | line RMS |'; printf ' %s |' "${names[@]}"; echo ' mean - d3d8x | lowest - d3d8x |'
   printf '| --- | --- | --- |'; printf ' --- |%.0s' "${names[@]}"; echo ' --- | --- |'

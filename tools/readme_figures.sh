@@ -9,8 +9,8 @@
 #            step runs and leaves docs/ alone. Default OUT_DIR: out/figures (out/figures-quick).
 #   --only papers: just the papers' figures (rsaa figures, about 4 minutes; with --quick: seconds).
 #   --only cost: just the timing steps (post-process at 1280x720, the culled pre-pass, the
-#            multisample pre-pass and the union pattern, how cost grows, the bench; about 10
-#            minutes), to measure them again on a quiet machine.
+#            multisample pre-pass and the union pattern, the cell patterns, how cost grows, the
+#            bench; about 16 minutes), to measure them again on a quiet machine.
 #   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
 #   --only coverage: just the coverage family's goals and scale tests (about 30 minutes).
 #   --only goals: just RSAA's goals (issue 11) on the bench scenes and held-out models (about 11
@@ -78,6 +78,23 @@ cost_steps() {
     $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
       --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me" \
       --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
+  step "cell patterns: 8 (16) subsamples from one 4x draw at twice the height (and width), what RSAA adds" cell-patterns-cost.md
+  { $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" --orbit-frames 2 \
+      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
+      --table tables/custom-gl4x-tall.json --out-dir "$out/cell-patterns-cost"
+    $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
+      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" --table tables/custom-gl4x-tall.json \
+      --out-dir "$out/cell-patterns-cost-1280"
+    $rsaa bench --growth --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" \
+      --table tables/custom-gl4x-tall.json --out-dir "$out/cell-patterns-growth"
+    # 16 subsamples from one 4x draw at twice the width and height.
+    $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" --orbit-frames 2 \
+      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" --table tables/custom-gl4x-quad.json \
+      --out-dir "$out/cell-patterns-cost-quad"
+    $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
+      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me" --table tables/custom-gl4x-quad.json \
+      --out-dir "$out/cell-patterns-cost-quad-1280"; } >"$out/cell-patterns-cost.md"
+  cp "$out/cell-patterns-growth/growth-lights.png" docs/images/cell_patterns_lights.png
   step "how cost grows: image size, triangles, lights" growth.md
   $rsaa bench --growth --out-dir "$out/growth" \
     --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me,rsaa 8x sadp-plane auth0" \
@@ -156,6 +173,14 @@ goals_steps() {
     >"$out/rsaa-goals.md"
   bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
     noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
+  step "cell patterns against d3d8x, the union and d3d16x (images, line cases)" cell-patterns.md
+  bash tools/cell_patterns.sh --out-dir "$out/cell-patterns" builtin:default builtin:grazing builtin:edges \
+    builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar "$engine" "$truck" \
+    $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj $models/3DS/fels.3ds $models/Collada/duck.dae \
+    $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o \
+    $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
+    $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
+    >"$out/cell-patterns.md"
   step "RSAA's goals on 13 more held-out models" rsaa-goals-more.md
   bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" "${more_models[@]}" >"$out/rsaa-goals-more.md"
 }
@@ -203,6 +228,9 @@ if [[ $quick == 1 ]]; then
   step "RSAA's goals, material edges off -> on, coplanar scene at 160x120" rsaa-goals.md
   bash tools/rsaa_goals.sh --width 160 --height 120 --out-dir "$out/rsaa-goals" --without "--material-edges off" \
     builtin:coplanar >"$out/rsaa-goals.md"
+  step "cell patterns, default scene at 160x120 (10^4 cases)" cell-patterns.md
+  bash tools/cell_patterns.sh --width 160 --height 120 --cases 10000 --out-dir "$out/cell-patterns" builtin:default \
+    >"$out/cell-patterns.md"
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   step "bench --growth --quick" growth.md

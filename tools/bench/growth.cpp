@@ -209,9 +209,14 @@ std::vector<LightCrossing> light_crossings(const GrowthResults& results) {
     return std::any_of(results.points.begin(), results.points.end(),
                        [&](const GrowthPoint& p) { return p.axis == GrowthAxis::Lights && p.label == label; });
   };
+  std::vector<std::pair<std::string, std::string>> pairs = {{rsaa8, "msaa 4x"}, {rsaa8, "ssaa 8x"}, {rsaa4, "msaa 4x"}};
+  // The --table row (a union or cell pattern: 8 subsamples from 4x draws) against 4x MSAA too.
+  for (const GrowthPoint& p : results.points)
+    if (p.axis == GrowthAxis::Lights && p.label.rfind("rsaa table ", 0) == 0 &&
+        std::find(pairs.begin(), pairs.end(), std::make_pair(p.label, std::string("msaa 4x"))) == pairs.end())
+      pairs.emplace_back(p.label, "msaa 4x");
   std::vector<LightCrossing> out;
-  for (const auto& [a, b] : std::vector<std::pair<std::string, std::string>>{
-           {rsaa8, "msaa 4x"}, {rsaa8, "ssaa 8x"}, {rsaa4, "msaa 4x"}})
+  for (const auto& [a, b] : pairs)
     if (measured(a) && measured(b)) out.push_back(light_crossing(results, a, b));
   return out;
 }
