@@ -274,13 +274,11 @@ bool driver_samples_cells(const SamplePattern& pattern, int width, int height, g
     if (raster_w > std::min({max_size[0], max_framebuffer[0], max_texture}) ||
         raster_h > std::min({max_size[1], max_framebuffer[1], max_texture}) || !driver_has_sample_count(m))
       continue;
-    const SamplePattern driver = query_gl_sample_pattern(m);
+    const SamplePattern expected = cell_pattern(query_gl_sample_pattern(m), c.x, c.y);
     std::vector<glm::ivec2> found;
     for (int i = 0; i < n; ++i) {
+      if (length(expected.positions[std::size_t(i)] - pattern.positions[std::size_t(i)]) > 1e-6) break;
       const int cell = i / m, column = cell % c.x, row = cell / c.x;  // row 0: the top (pixel space, +y down)
-      const Vec2 d = driver.positions[std::size_t(i % m)];
-      const Vec2 expected = {(column + 0.5 + d.x) / c.x - 0.5, (row + 0.5 + d.y) / c.y - 0.5};
-      if (length(expected - pattern.positions[std::size_t(i)]) > 1e-6) break;
       found.push_back({column, c.y - 1 - row});
     }
     if (int(found.size()) != n) continue;

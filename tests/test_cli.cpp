@@ -95,6 +95,30 @@ TEST(Cli, TrainAcceptsPositions) {
   EXPECT_EQ(run_rsaa("eval-table --cases 2000 " + dir.file("custom-diag.json")).exit_code, 0);
 }
 
+// --cells trains the cell pattern of a pattern (here the driver's 4x, as the checked-in cell
+// tables were): the checked-in tables again, byte for byte; bad cell counts are refused before
+// anything is written.
+TEST(Cli, TrainCellsOfTheDriversPatternMakesTheCheckedInTables) {
+  TempDir dir;
+  for (const auto& [cells, stem] : {std::pair{"1x2", "custom-gl4x-tall"}, std::pair{"2x1", "custom-gl4x-wide"}}) {
+    const auto r = run_rsaa(std::string("train --pattern gl4x --cells ") + cells + " --quiet --out-dir " + dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (const char* ext : {".json", ".glsl", ".hlsl"})
+      EXPECT_TRUE(test::read_text(dir.file(std::string(stem) + ext)) ==
+                  test::read_text(std::string(RSAA_SOURCE_DIR) + "/tables/" + stem + ext))
+          << stem << ext << " differs from the checked-in file";
+  }
+  for (const auto& [args, message] :
+       {std::pair{"--pattern gl4x --cells 0x2", "is not COLUMNSxROWS"}, std::pair{"--pattern gl4x --cells 12x1", "is not COLUMNSxROWS"},
+        std::pair{"--pattern d3d16x --cells 2x1", "tables hold at most 16"},
+        std::pair{"--from-scene builtin:edges --cells 1x2", "--cells trains a pattern's table"}}) {
+    const auto r = run_rsaa(std::string("train ") + args + " --out-dir " + dir.file("refused"));
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("refused"))) << args;
+  }
+}
+
 TEST(Cli, EvalTableJsonAndErrors) {
   TempDir dir;
   ASSERT_EQ(run_rsaa("train --pattern d3d4x --cases 4000 --quiet --out-dir " + dir.path()).exit_code, 0);

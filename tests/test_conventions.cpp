@@ -3,10 +3,13 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <tuple>
 
 #include "core/rsaa/conventions.h"
 #include "core/rsaa/line_case.h"
 #include "core/rsaa/mask.h"
+#include "core/rsaa/offset_table.h"
 #include "core/rsaa/sample_pattern.h"
 
 namespace rsaa {
@@ -69,6 +72,37 @@ TEST(Conventions, PatternFromPositionsRejectsBadPositions) {
 
 namespace rsaa {
 namespace {
+
+// Cell patterns (docs/conventions.md section 1): cell (column, row) maps base position p to
+// ((column + 1/2 + p.x) / columns - 1/2, (row + 1/2 + p.y) / rows - 1/2), cells row by row from the
+// top-left (y down), and the checked-in cell tables are the cells of the driver's 4x pattern.
+TEST(Conventions, CellPatternsScaleTheBasePatternIntoEachCell) {
+  const SamplePattern d3d4x = builtin_pattern("d3d4x");  // (-2,-6) (6,-2) (-6,2) (2,6) / 16
+  const SamplePattern tall = cell_pattern(d3d4x, 1, 2);
+  EXPECT_EQ(tall.name, "custom-d3d4x-tall");
+  ASSERT_EQ(tall.size(), 8);
+  EXPECT_EQ(tall.positions[0], (Vec2{-2.0 / 16, (0.5 - 6.0 / 16) / 2 - 0.5}));  // top cell: y in [-1/2, 0)
+  EXPECT_EQ(tall.positions[7], (Vec2{2.0 / 16, (1.5 + 6.0 / 16) / 2 - 0.5}));   // bottom cell
+  const SamplePattern quad = cell_pattern(d3d4x, 2, 2);
+  EXPECT_EQ(quad.name, "custom-d3d4x-quad");
+  EXPECT_EQ(quad.positions[5], (Vec2{(1.5 + 6.0 / 16) / 2 - 0.5, (0.5 - 2.0 / 16) / 2 - 0.5}));  // top-right cell
+  for (const Vec2& p : quad.positions) EXPECT_TRUE(std::abs(p.x) < 0.5 && std::abs(p.y) < 0.5);
+  EXPECT_EQ(cell_pattern(d3d4x, 2, 1).name, "custom-d3d4x-wide");
+  EXPECT_EQ(cell_pattern(d3d4x, 3, 1).name, "custom-d3d4x-cells3x1");
+  EXPECT_EQ(cell_pattern(tall, 2, 1).name, "custom-d3d4x-tall-wide");  // custom- is not repeated
+  EXPECT_THROW(cell_pattern(d3d4x, 0, 2), std::invalid_argument);
+  EXPECT_THROW(cell_pattern(builtin_pattern("d3d16x"), 3, 2), std::invalid_argument);  // 96 subsamples
+  const SamplePattern gl4x = read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/gl4x.json").pattern;
+  for (const auto& [file, columns, rows] : {std::tuple{"custom-gl4x-wide", 2, 1}, std::tuple{"custom-gl4x-tall", 1, 2},
+                                            std::tuple{"custom-gl4x-quad", 2, 2}}) {
+    const SamplePattern checked_in =
+        read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/" + file + ".json").pattern;
+    const SamplePattern made = cell_pattern(gl4x, columns, rows);
+    EXPECT_EQ(made.name, checked_in.name);
+    ASSERT_EQ(made.size(), checked_in.size()) << file;
+    for (int i = 0; i < made.size(); ++i) EXPECT_EQ(made.positions[i], checked_in.positions[i]) << file << " " << i;
+  }
+}
 
 TEST(Conventions, OutsidePixelTowardsSubsampleMatchesThePapersTableForD3D8x) {
   // Listing 2/3 of the paper: sampleOffset[] for the eight D3D 8x subsamples (y down).

@@ -300,18 +300,13 @@ TEST_F(MsaaPrePass, CellPatternAsOneDrawSameMasksAsJittered) {
 }
 
 // 16 subsamples from one 4x draw at twice the width and height (2 x 2 cells of the driver's 4x
-// positions, built from the driver's pattern; the masks do not depend on the table's offsets, so
+// positions, cell_pattern() of the driver's pattern; the masks do not depend on the table's offsets, so
 // the fallback rule's table serves): masks against 16 jittered draws. Measured at 320x240 when
 // written: 106 pixels on default (of 8,076 edge pixels), 28 on edges (of 1,776), one subsample
 // each but one (two); tolerance 2% of the edge pixels (twice the subsamples that may tie).
 TEST_F(MsaaPrePass, QuadCellPatternAsOneDrawSameMasksAsJittered) {
-  const SamplePattern driver = query_gl_sample_pattern(4);
-  SamplePattern quad{"custom-gl4x-quad", {}};
-  for (int row = 0; row < 2; ++row)
-    for (int column = 0; column < 2; ++column)
-      for (const Vec2& d : driver.positions) quad.positions.push_back({(column + 0.5 + d.x) / 2 - 0.5, (row + 0.5 + d.y) / 2 - 0.5});
   RsaaSettings settings;
-  settings.table = std::make_shared<OffsetTable>(fallback_table(quad));
+  settings.table = std::make_shared<OffsetTable>(fallback_table(cell_pattern(query_gl_sample_pattern(4), 2, 2)));
   settings.pattern = "";
   settings.prepass = "msaa";
   ASSERT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass());

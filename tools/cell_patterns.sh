@@ -9,8 +9,8 @@
 # over the scenes and the lowest. Writes OUT_DIR/cell-patterns.md and the renders.
 # Usage: tools/cell_patterns.sh [--width W] [--height H] [--cases N] [--out-dir DIR] SCENE...
 #   Default 640x480, 10^6 fresh cases for the line RMS, OUT_DIR out/cell-patterns. About 20
-#   seconds a scene. The quad table is checked: trained again from the positions of the driver's
-#   4x pattern (tables/gl4x.json), it must be the checked-in file.
+#   seconds a scene. The cell tables are checked first: trained again from the driver's 4x
+#   pattern (rsaa train --pattern gl4x --cells CxR), each must be the checked-in file.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 width=640 height=480 out=out/cell-patterns cases=1000000
@@ -31,20 +31,15 @@ source tools/scene_images.sh
 check_scenes_and_build "$@"
 mkdir -p "$out/tables"
 
-# The checked-in quad table is the 2 x 2 cells of the driver's 4x positions (as tables/gl4x.json records them, pixel units,
-# +y down): cell (column, row) maps position p to ((column + 0.5 + p.x) / 2 - 0.5, (row + 0.5 + p.y) / 2 - 0.5).
-driver=$(sed -n 's/.*"samples": *\[\(.*\)\],*$/\1/p' tables/gl4x.json | tr -d '[] ' | tr ',' ' ')
-[[ $(wc -w <<<"$driver") == 8 ]] || { echo "$script: tables/gl4x.json: no 4 sample positions" >&2; exit 1; }
-quad_positions=$(awk -v d="$driver" 'BEGIN {
-  n = split(d, p, " ")
-  for (row = 0; row < 2; ++row) for (column = 0; column < 2; ++column) for (i = 1; i <= n; i += 2)
-    printf "%s%g,%g", (row + column + i > 1 ? " " : ""), (column + 0.5 + p[i]) / 2 - 0.5, (row + 0.5 + p[i + 1]) / 2 - 0.5
-}')
-$rsaa train --pattern custom-gl4x-quad --positions "$quad_positions" --cases 1000000 --seed 1 --fit mixed \
-  --two-line-weight 0.5 --out-dir "$out/tables" >/dev/null ||
-  { echo "$script: rsaa train --pattern custom-gl4x-quad failed" >&2; exit 1; }
-cmp -s "$out/tables/custom-gl4x-quad.json" tables/custom-gl4x-quad.json ||
-  { echo "$script: tables/custom-gl4x-quad.json is not the 2 x 2 cells of tables/gl4x.json's positions" >&2; exit 1; }
+# The checked-in cell tables are the cells of this driver's 4x pattern, trained again here
+# (rsaa train --cells; about a second each): a driver with other positions needs its own.
+for shape in 2x1:wide 1x2:tall 2x2:quad; do
+  $rsaa train --pattern gl4x --cells "${shape%:*}" --quiet --out-dir "$out/tables" >/dev/null ||
+    { echo "$script: rsaa train --pattern gl4x --cells ${shape%:*} failed" >&2; exit 1; }
+  cmp -s "$out/tables/custom-gl4x-${shape#*:}.json" "tables/custom-gl4x-${shape#*:}.json" ||
+    { echo "$script: tables/custom-gl4x-${shape#*:}.json is not the ${shape%:*} cells of this driver's 4x pattern" \
+        "(rsaa train --pattern gl4x --cells ${shape%:*})" >&2; exit 1; }
+done
 
 labels=(d3d8x custom-gl4x-union custom-gl4x-wide custom-gl4x-tall custom-gl4x-quad d3d16x)
 declare -A table_file=([d3d8x]=tables/d3d8x.json [custom-gl4x-union]=tables/custom-gl4x-union.json

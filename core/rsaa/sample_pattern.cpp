@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "core/rsaa/conventions.h"
@@ -108,6 +109,24 @@ SamplePattern pattern_from_gl_positions(const std::string& name,
   pixel.reserve(gl_positions.size());
   for (Vec2 s : gl_positions) pixel.push_back(gl_sample_position_to_pixel(s));
   return pattern_from_positions(name, pixel);
+}
+
+SamplePattern cell_pattern(const SamplePattern& base, int columns, int rows) {
+  if (columns < 1 || rows < 1 || base.size() < 1 || std::int64_t(columns) * rows * base.size() > kMaxPatternSamples)
+    throw std::invalid_argument("cells " + std::to_string(columns) + "x" + std::to_string(rows) + " of pattern '" +
+                                base.name + "' (" + std::to_string(base.size()) + " samples): at least 1x1 and at most " +
+                                std::to_string(kMaxPatternSamples) + " subsamples in all");
+  const std::string stem = base.name.rfind("custom-", 0) == 0 ? base.name.substr(7) : base.name;
+  std::string shape = "cells" + std::to_string(columns) + "x" + std::to_string(rows);
+  if (columns == 2 && rows == 1) shape = "wide";
+  if (columns == 1 && rows == 2) shape = "tall";
+  if (columns == 2 && rows == 2) shape = "quad";
+  std::vector<Vec2> positions;
+  for (int row = 0; row < rows; ++row)
+    for (int column = 0; column < columns; ++column)
+      for (const Vec2& p : base.positions)
+        positions.push_back({(column + 0.5 + p.x) / columns - 0.5, (row + 0.5 + p.y) / rows - 0.5});
+  return pattern_from_positions("custom-" + stem + "-" + shape, positions);
 }
 
 PixelStep outside_pixel_towards(Vec2 sample) {

@@ -40,6 +40,14 @@ constexpr double kMinSampleSpacing = 1.0 / 1024.0;
 // degenerate (see kMinSampleSpacing), or the count is not 1..64.
 SamplePattern pattern_from_positions(const std::string& name, const std::vector<Vec2>& positions);
 
+// The cell pattern of `base` (docs/conventions.md, section 1): the pixel split into `columns` x
+// `rows` cells (row by row from the top-left), each holding base's positions scaled into it;
+// subsample i is base's i % m in cell i / m (m = base's count). A driver with m samples draws it
+// in one multisample draw at columns x rows times the image's size. Named custom-BASE-wide
+// (2 x 1), -tall (1 x 2), -quad (2 x 2), else custom-BASE-cellsCxR. Throws std::invalid_argument
+// for cells below 1 or more subsamples than a pattern has.
+SamplePattern cell_pattern(const SamplePattern& base, int columns, int rows);
+
 // Positions as glGetMultisamplefv reports them (origin bottom-left, y up, in [0,1]^2).
 SamplePattern pattern_from_gl_positions(const std::string& name,
                                         const std::vector<Vec2>& gl_positions);

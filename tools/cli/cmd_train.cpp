@@ -28,6 +28,7 @@ namespace {
 struct TrainArgs {
   std::string pattern;
   std::string positions;
+  std::string cells;  // "CxR": the cell pattern of --pattern (empty: the pattern itself)
   std::uint64_t cases = 1000000;
   std::uint64_t seed = 1;
   std::string out_dir = "tables";
@@ -103,6 +104,7 @@ double peak_memory_mib() {
 int run_train_from_scene(const TrainArgs& a) {
   if (!a.pattern.empty() && a.pattern != "d3d8x")
     throw std::invalid_argument("--from-scene trains d3d8x tables only (RSAA 8x masks)");
+  if (!a.cells.empty()) throw std::invalid_argument("--cells trains a pattern's table, not --from-scene's");
   const auto lock = claim_out_dir(a.out_dir, "rsaa train");
   const OffsetTable generic = a.generic.empty() ? gl::builtin_offset_table("d3d8x") : read_offset_table(a.generic);
   const std::string generic_name = a.generic.empty() ? "the built-in d3d8x table" : a.generic;
@@ -147,6 +149,19 @@ int run_train(const TrainArgs& a) {
     if (gl_pattern_samples(a.pattern) == 0 && a.pattern.rfind("custom-", 0) != 0)
       throw std::invalid_argument("--positions needs --pattern glNx (a driver's pattern read elsewhere) or --pattern custom-NAME");
     options.pattern = pattern_from_positions(a.pattern, parse_positions(a.positions));
+  }
+  if (!a.cells.empty()) {
+    // "CxR", each 1..8: the pattern's cells (docs/conventions.md section 1), named custom-BASE-SHAPE.
+    if (a.cells.size() != 3 || a.cells[1] != 'x' || a.cells[0] < '1' || a.cells[0] > '8' || a.cells[2] < '1' ||
+        a.cells[2] > '8')
+      throw std::invalid_argument("--cells: '" + a.cells + "' is not COLUMNSxROWS, each 1 to 8 (e.g. 1x2)");
+    const int columns = a.cells[0] - '0', rows = a.cells[2] - '0';
+    if (std::int64_t(columns) * rows * options.pattern.size() > kMaxTableSamples)
+      throw std::invalid_argument("--cells " + a.cells + " of " + options.pattern.name + " (" +
+                                  std::to_string(options.pattern.size()) + " samples) makes " +
+                                  std::to_string(columns * rows * options.pattern.size()) +
+                                  " subsamples; tables hold at most " + std::to_string(kMaxTableSamples));
+    options.pattern = cell_pattern(options.pattern, columns, rows);
   }
   options.cases = a.cases;
   options.seed = a.seed;
@@ -213,6 +228,11 @@ Action add_train_command(CLI::App& app) {
                   "refused where it has fewer samples); custom-NAME with --positions");
   cmd->add_option("--positions", args->positions,
                   "Subsample positions in pixel space (+y down), \"x,y x,y ...\"");
+  cmd->add_option("--cells", args->cells,
+                  "COLUMNSxROWS: train the cell pattern of --pattern instead (its positions in each cell of "
+                  "the pixel split so; a driver with that pattern draws it once at that multiple of the image: "
+                  "gl4x --cells 1x2 is tables/custom-gl4x-tall.json); named custom-PATTERN-wide (2x1), -tall "
+                  "(1x2), -quad (2x2) or -cellsCxR");
   cmd->add_option("--cases", args->cases, "Number of line cases, half one-line, half two-line")
       ->capture_default_str()
       ->check(whole_range(1, std::uint64_t{1} << 32));
