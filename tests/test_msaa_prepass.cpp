@@ -37,6 +37,18 @@ std::vector<std::uint32_t> masks_of(const GpuScene& gpu, const View& view, RsaaS
   return read_back_uints(mask_texture.get(), view.width, view.height);
 }
 
+// Settings drawing with `table` (its pattern, not settings.pattern's) and the pre-pass `prepass`.
+RsaaSettings with_table(OffsetTable table, const std::string& prepass = "msaa") {
+  RsaaSettings settings;
+  settings.table = std::make_shared<OffsetTable>(std::move(table));
+  settings.pattern = "";
+  settings.prepass = prepass;
+  return settings;
+}
+OffsetTable checked_in_table(const std::string& name) {
+  return read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/" + name + ".json");
+}
+
 struct MaskComparison {
   std::size_t pixels = 0, edges_jittered = 0, edges_msaa = 0, differing = 0;
 };
@@ -246,11 +258,7 @@ TEST_F(MsaaPrePass, SameMasksAsJitteredOnADetailedModel) {
 // jittered draw put the sample at different sub-pixel positions of the rasterizer's snapped
 // grid, and a triangle edge within that snapping of the sample decides. Tolerance: 12 pixels.
 TEST_F(MsaaPrePass, UnionPatternAsTwoDrawsSameMasksAsJittered) {
-  RsaaSettings settings;
-  settings.table = std::make_shared<OffsetTable>(
-      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-union.json"));
-  settings.pattern = "";
-  settings.prepass = "msaa";
+  RsaaSettings settings = with_table(checked_in_table("custom-gl4x-union"));
   ASSERT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass());
   for (const char* scene : {"builtin:default", "builtin:edges"}) {
     const MaskComparison c = compare_prepasses(scene, settings, 1);
@@ -279,11 +287,7 @@ TEST_F(MsaaPrePass, UnionPatternAsTwoDrawsSameMasksAsJittered) {
 // pixels (for 16 subsamples, below, 2%).
 TEST_F(MsaaPrePass, CellPatternAsOneDrawSameMasksAsJittered) {
   for (const char* table : {"custom-gl4x-wide", "custom-gl4x-tall"}) {
-    RsaaSettings settings;
-    settings.table = std::make_shared<OffsetTable>(
-        read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/" + table + ".json"));
-    settings.pattern = "";
-    settings.prepass = "msaa";
+    RsaaSettings settings = with_table(checked_in_table(table));
     ASSERT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass()) << table;
     settings.prepass = "auto";  // auto takes the one draw too
     EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).prepass_in_use(), "msaa") << table;
@@ -305,10 +309,7 @@ TEST_F(MsaaPrePass, CellPatternAsOneDrawSameMasksAsJittered) {
 // written: 106 pixels on default (of 8,076 edge pixels), 28 on edges (of 1,776), one subsample
 // each but one (two); tolerance 2% of the edge pixels (twice the subsamples that may tie).
 TEST_F(MsaaPrePass, QuadCellPatternAsOneDrawSameMasksAsJittered) {
-  RsaaSettings settings;
-  settings.table = std::make_shared<OffsetTable>(fallback_table(cell_pattern(query_gl_sample_pattern(4), 2, 2)));
-  settings.pattern = "";
-  settings.prepass = "msaa";
+  const RsaaSettings settings = with_table(fallback_table(cell_pattern(query_gl_sample_pattern(4), 2, 2)));
   ASSERT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass());
   for (const char* scene : {"builtin:default", "builtin:edges"}) {
     const MaskComparison c = compare_prepasses(scene, settings, 0);
@@ -320,10 +321,7 @@ TEST_F(MsaaPrePass, QuadCellPatternAsOneDrawSameMasksAsJittered) {
 // A cell pattern's draw keeps every subsample's record, as "records" does: "auto" takes it within
 // the same budget, to the byte, and the jittered pre-pass beyond; "msaa" takes it whatever the budget.
 TEST_F(MsaaPrePass, AutoTakesACellPatternWithinTheRecordsBudget) {
-  RsaaSettings settings;
-  settings.table = std::make_shared<OffsetTable>(
-      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-tall.json"));
-  settings.pattern = "";
+  RsaaSettings settings = with_table(checked_in_table("custom-gl4x-tall"), "auto");
   settings.auto_records_max_bytes = std::int64_t(kWidth) * kHeight * 8 * 12;
   EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).prepass_in_use(), "msaa");
   settings.auto_records_max_bytes -= 1;
@@ -339,12 +337,8 @@ TEST_F(MsaaPrePass, AutoTakesACellPatternWithinTheRecordsBudget) {
 TEST_F(MsaaPrePass, CellPatternTooWideForTheDriverFallsBack) {
   GLint max_width = 0;
   glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &max_width);
-  RsaaSettings settings;
-  settings.table = std::make_shared<OffsetTable>(
-      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-wide.json"));
-  settings.pattern = "";
+  RsaaSettings settings = with_table(checked_in_table("custom-gl4x-wide"), "auto");
   const int width = max_width / 2 + 1;
-  settings.prepass = "auto";
   EXPECT_NE(RsaaPass(settings, width, 1).prepass_in_use(), "msaa");
   settings.prepass = "msaa";
   try {
