@@ -118,7 +118,7 @@ MaskRun masks_both_ways(const std::string& scene_name, RsaaSettings settings, in
   const gl::Program engine = engine_prepass_program(pass);
   pass.render_subsamples_with_own_shaders(frame, [&] {
     glUseProgram(engine.get());
-    SceneRenderer::draw(scene.gpu, scene.view, glm::vec2(0.0f), engine.get());
+    SceneRenderer::draw_in_current_viewport(scene.gpu, scene.view, glm::vec2(0.0f), engine.get());
   });
   pass.resolve(frame, output.get(), masks.get());
   run.engine_program = read_back_uints(masks.get(), width, height);
@@ -137,11 +137,16 @@ TEST_F(RsaaPassApi, AnEnginesOwnShadersGiveThePassProgramsMasks) {
   records_material.prepass = "records";
   RsaaSettings jittered;  // the defaults ("auto") take records for d3d8x on a 4-sample driver
   jittered.prepass = "jittered";
+  RsaaSettings cells;  // one 4x draw at twice the height: the engine's draw into the pass's viewport
+  cells.table = std::make_shared<OffsetTable>(
+      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-tall.json"));
+  cells.pattern = "";
   for (const auto& [scene, settings] : {std::pair{"builtin:default", RsaaSettings{}},
                                         std::pair{"builtin:edges", RsaaSettings{}},
                                         std::pair{"builtin:default", jittered},
                                         std::pair{"builtin:edges", jittered},
                                         std::pair{"builtin:default", multisample},
+                                        std::pair{"builtin:default", cells},
                                         std::pair{"builtin:coplanar", material},
                                         std::pair{"builtin:coplanar", multisample_material},
                                         std::pair{"builtin:coplanar", records_material}}) {
