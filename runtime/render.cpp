@@ -51,6 +51,7 @@ Image render_frame(const GpuScene& scene, const Camera& camera, const TechniqueO
     stats->label = technique_label(options);
     stats->pass_times = technique->take_pass_times();
     stats->bytes_per_pixel = technique->bytes_per_pixel();
+    stats->choices = technique->choices();
   }
   return image;
 }

@@ -29,6 +29,7 @@ struct RenderStats {
   std::string label;
   std::vector<PassTime> pass_times;
   double bytes_per_pixel = 0.0;
+  std::string choices;  // Technique::choices()
 };
 
 // Needs a current GL context. Renders two frames, the first untimed (warm-up), and returns

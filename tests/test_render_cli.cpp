@@ -39,6 +39,22 @@ TEST(RenderCli, WritesPngAndExrAndComparesThem) {
   EXPECT_LE(j.at("ssim").get<double>(), 1.0);
 }
 
+// RSAA says which pre-pass `auto` took on this driver and size: d3d8x's draws writing records,
+// a cell pattern's one draw at its multiple of the image, and no line for techniques without a choice.
+TEST(RenderCli, RsaaSaysWhichPrePassItTook) {
+  TempDir dir;
+  const std::string size = " --width 64 --height 48 --out " + dir.file("a.png");
+  auto r = run_rsaa("render --technique rsaa" + size);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("pre-pass records: 8 jittered draws"), std::string::npos) << r.output;
+  r = run_rsaa("render --technique rsaa --table " + std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-tall.json" + size);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("pre-pass msaa: one 4-sample draw at 1x2 cells (64x96)"), std::string::npos) << r.output;
+  r = run_rsaa("render --technique msaa --samples 4" + size);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("pre-pass"), std::string::npos) << r.output;
+}
+
 TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
   TempDir dir;
   const std::string out = dir.file("out.png");

@@ -46,6 +46,7 @@ int run_render(const RenderArgs& a) {
     std::printf("  %-13s %8.2f ms (GL timer query %s)\n", t.pass.c_str(), t.wall_milliseconds, query);
   }
   std::printf("  memory        %8.1f bytes/pixel\n", stats.bytes_per_pixel);
+  if (!stats.choices.empty()) std::printf("  %s\n", stats.choices.c_str());
   return 0;
 }
 
