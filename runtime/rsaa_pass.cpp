@@ -753,12 +753,12 @@ RsaaPass& RsaaPass::operator=(RsaaPass&&) noexcept = default;
 std::string RsaaPass::prepass_description() const {
   const int n = pattern_.size();
   const std::string draws = std::to_string(n) + (n == 1 ? " jittered draw" : " jittered draws");
-  if (layered_) return "records: " + draws + " writing surface records";
-  if (!multisample_) return "jittered: " + draws + (cull_ ? " behind the neighbourhood culling" : "");
+  if (layered_) return "records, " + draws + " writing surface records";
+  if (!multisample_) return "jittered, " + draws + (cull_ ? " behind the neighbourhood culling" : "");
   const std::string samples = std::to_string(raster_samples()) + "-sample draw";
-  if (union_) return "msaa: two " + samples + "s (a union pattern)";
-  if (cells_ == glm::ivec2(1, 1)) return "msaa: one " + samples;
-  return "msaa: one " + samples + " at " + std::to_string(cells_.x) + "x" + std::to_string(cells_.y) + " cells (" +
+  if (union_) return "msaa, two " + samples + "s (a union pattern)";
+  if (cells_ == glm::ivec2(1, 1)) return "msaa, one " + samples;
+  return "msaa, one " + samples + " at " + std::to_string(cells_.x) + "x" + std::to_string(cells_.y) + " cells (" +
          std::to_string(raster_size().x) + "x" + std::to_string(raster_size().y) + ")";
 }
 

@@ -362,8 +362,8 @@ class RsaaPass {
   // The pre-pass this pass runs: "msaa", "records" or "jittered" (settings.prepass, "auto"
   // resolved for this driver and size).
   std::string prepass_in_use() const { return multisample_ ? "msaa" : layered_ ? "records" : "jittered"; }
-  // The same with its draws, for a user: "msaa: one 4-sample draw at 1x2 cells (640x960)",
-  // "records: 8 jittered draws", ...
+  // The same with its draws, for a user: "msaa, one 4-sample draw at 1x2 cells (640x960)",
+  // "records, 8 jittered draws writing surface records", ...
   std::string prepass_description() const;
   // Bytes per pixel of the GL memory this pass keeps (the frame's targets are RsaaTargets'): the
   // pre-pass's codes and depth, the post-process's edge list or edge-pass depth, and, for a pass

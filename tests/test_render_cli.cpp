@@ -46,13 +46,13 @@ TEST(RenderCli, RsaaSaysWhichPrePassItTook) {
   const std::string size = " --width 64 --height 48 --out " + dir.file("a.png");
   auto r = run_rsaa("render --technique rsaa" + size);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("pre-pass records: 8 jittered draws"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("pre-pass in use: records, 8 jittered draws"), std::string::npos) << r.output;
   r = run_rsaa("render --technique rsaa --table " + std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-tall.json" + size);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("pre-pass msaa: one 4-sample draw at 1x2 cells (64x96)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("pre-pass in use: msaa, one 4-sample draw at 1x2 cells (64x96)"), std::string::npos) << r.output;
   r = run_rsaa("render --technique msaa --samples 4" + size);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(r.output.find("pre-pass"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("pre-pass in use"), std::string::npos) << r.output;
 }
 
 TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {

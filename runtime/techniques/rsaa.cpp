@@ -35,7 +35,7 @@ class Rsaa : public Technique {
     timer_.end();
   }
 
-  std::string choices() const override { return "pre-pass " + pass_.prepass_description(); }
+  std::string choices() const override { return "pre-pass in use: " + pass_.prepass_description(); }
 
   double bytes_per_pixel() const override {
     return RsaaTargets::bytes_per_pixel(material_edges_) + pass_.bytes_per_pixel(in_place_);
