@@ -251,40 +251,52 @@ bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector
 
 // Whether the driver can run the pre-pass as one m-sample draw at `cells` times the image's size
 // (columns, rows) for an n = m x columns x rows subsample `pattern` whose subsample i is the
-// driver's sample i % m in cell i / m of the pixel (cells numbered row by row from the top-left,
-// pixel space): each cell a raster pixel of the draw (a cell pattern, such as
-// tables/custom-gl4x-wide.json: 8 subsamples from one 4x draw at twice the width). Sets `cells`
+// driver's sample i % m in cell i / m of the pixel (cell_pattern(): cells numbered row by row from
+// the top-left, pixel space), each cell a raster pixel of the draw (a cell pattern, such as
+// tables/custom-gl4x-tall.json: 8 subsamples from one 4x draw at twice the height). Sets `cells`
 // and `offsets` (per subsample, its cell's raster pixel relative to the pixel's lower-left cell,
-// window space). Cells of 2 x 1, 1 x 2 and 2 x 2 are tried; a draw beyond the driver's
-// framebuffer or viewport size is not offered.
+// window space). Any cells up to 8 x 8 (what rsaa train --cells makes); a draw beyond the
+// driver's framebuffer, viewport, texture or sample limits is not offered, nor a count whose
+// positions the driver reports unusably (pattern_from_positions refuses them).
 bool driver_samples_cells(const SamplePattern& pattern, int width, int height, glm::ivec2& cells,
                           std::vector<glm::ivec2>& offsets) {
-  GLint max_samples = 0, max_integer_samples = 0, max_size[2] = {}, max_framebuffer[2] = {}, max_texture = 0;
+  GLint max_samples = 0, max_integer_samples = 0, max_depth_samples = 0, max_size[2] = {}, max_framebuffer[2] = {},
+        max_texture = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
+  glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_depth_samples);
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_size);
   glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &max_framebuffer[0]);
   glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &max_framebuffer[1]);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
   const int n = pattern.size();
-  for (const glm::ivec2 c : {glm::ivec2(2, 1), glm::ivec2(1, 2), glm::ivec2(2, 2)}) {
-    const int m = n / (c.x * c.y);
-    if (n % (c.x * c.y) != 0 || m < 2 || m > max_samples || m > max_integer_samples) continue;
-    const std::int64_t raster_w = std::int64_t(width) * c.x, raster_h = std::int64_t(height) * c.y;
-    if (raster_w > std::min({max_size[0], max_framebuffer[0], max_texture}) ||
-        raster_h > std::min({max_size[1], max_framebuffer[1], max_texture}) || !driver_has_sample_count(m))
-      continue;
-    const SamplePattern expected = cell_pattern(query_gl_sample_pattern(m), c.x, c.y);
-    std::vector<glm::ivec2> found;
-    for (int i = 0; i < n; ++i) {
-      if (length(expected.positions[std::size_t(i)] - pattern.positions[std::size_t(i)]) > 1e-6) break;
-      const int cell = i / m, column = cell % c.x, row = cell / c.x;  // row 0: the top (pixel space, +y down)
-      found.push_back({column, c.y - 1 - row});
+  for (int area = 2; area <= n / 2; ++area)  // the fewest cells first: the most samples a draw
+    for (int columns = 1; columns <= std::min(area, 8); ++columns) {
+      const glm::ivec2 c(columns, area / columns);
+      const int m = n / area;
+      if (area % columns != 0 || c.y > 8 || n % area != 0 || m < 2 || m > max_samples || m > max_integer_samples ||
+          m > max_depth_samples)
+        continue;
+      const std::int64_t raster_w = std::int64_t(width) * c.x, raster_h = std::int64_t(height) * c.y;
+      if (raster_w > std::min({max_size[0], max_framebuffer[0], max_texture}) ||
+          raster_h > std::min({max_size[1], max_framebuffer[1], max_texture}) || !driver_has_sample_count(m))
+        continue;
+      SamplePattern expected;
+      try {
+        expected = cell_pattern(query_gl_sample_pattern(m), c.x, c.y);
+      } catch (const std::invalid_argument&) {
+        continue;  // positions no table could have: not this pattern's
+      }
+      std::vector<glm::ivec2> found;
+      for (int i = 0; i < n; ++i) {
+        if (length(expected.positions[std::size_t(i)] - pattern.positions[std::size_t(i)]) > 1e-6) break;
+        const int cell = i / m, column = cell % c.x, row = cell / c.x;  // row 0: the top (pixel space, +y down)
+        found.push_back({column, c.y - 1 - row});
+      }
+      if (int(found.size()) != n) continue;
+      cells = c, offsets = found;
+      return true;
     }
-    if (int(found.size()) != n) continue;
-    cells = c, offsets = found;
-    return true;
-  }
   return false;
 }
 
@@ -592,8 +604,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   const bool may_multisample = settings.prepass == "msaa" || auto_may_list;
   multisample_ = may_multisample && driver_samples_pattern(pattern_);
   std::vector<glm::ivec2> union_raster, cell_offsets;
-  // A cell pattern's draw keeps the records of every subsample, as "records" does: "auto" takes
-  // it within the same budget (16 subsamples at 1920x1080 keep 380 MiB).
+  // A cell pattern's draw (and a union's two) keeps the records of every subsample, as "records"
+  // does: "auto" takes it within the same budget (16 subsamples at 1920x1080 keep 380 MiB).
   const bool records_fit =
       double(width) * height * n * kRecordBytesPerSubsample <= double(settings.auto_records_max_bytes);
   glm::ivec2 cells{1, 1};
@@ -603,7 +615,9 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   else
     cell_offsets.clear();
   if (may_multisample && !multisample_) {
-    multisample_ = union_ = driver_samples_union(pattern_, union_shift_, union_raster);
+    // A union's two draws keep every subsample's record too: the same budget under "auto".
+    multisample_ = union_ = driver_samples_union(pattern_, union_shift_, union_raster) &&
+                            (settings.prepass == "msaa" || records_fit);
     if (!multisample_ && settings.prepass == "msaa")
       throw std::invalid_argument("RSAA prepass msaa: this driver has no " + std::to_string(n) +
                                   "-sample integer target at the positions of pattern '" + pattern_.name + "'" +

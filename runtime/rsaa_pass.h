@@ -197,10 +197,12 @@ struct RsaaSettings {
   // (gl4x on Mesa llvmpipe; d3d8x on GPUs whose 8x is the standard pattern), or, for a table of
   // 2m subsamples that are the driver's m positions and the same shifted by one sub-pixel offset
   // (a union pattern, such as tables/custom-gl4x-union.json), draws twice into m-sample targets,
-  // the second shifted; for a cell pattern (the driver's m positions in each of 2 x 1, 1 x 2 or
-  // 2 x 2 cells of the pixel, such as tables/custom-gl4x-wide.json and custom-gl4x-tall.json:
-  // 8 subsamples) draws once into m-sample targets that many times the image's size, each cell
-  // a raster pixel (the callback draws into the viewport the pass set: do not set your own);
+  // the second shifted; for a cell pattern (the driver's m positions in each cell of the pixel
+  // split into columns x rows, up to 8 x 8: cell_pattern(), rsaa train --cells; such as
+  // tables/custom-gl4x-tall.json, -wide and -quad) draws once into m-sample targets that many
+  // times the image's size, each cell a raster pixel (the callback draws into the viewport the
+  // pass set: do not set your own; an engine fragment stage that reads gl_FragCoord sees raster
+  // coordinates there, not the image's);
   // refused where the driver can do none of these. Its masks equal the jittered
   // pre-pass's (tests/test_msaa_prepass.cpp: up to float ties and, for a union, the image's
   // outermost pixels) at about half its cost for 4 subsamples on llvmpipe (README, *The
@@ -208,15 +210,15 @@ struct RsaaSettings {
   // its own layers of array textures) instead of codes, and the same compute passes after: any
   // pattern, the same masks as "jittered" up to float ties (the records round the face normal to
   // 2 x 16 bits), more memory (12 bytes a subsample, see auto_records_max_bytes). "auto"
-  // (default): "msaa" where the driver can (a cell pattern's draw only while its records fit
-  // auto_records_max_bytes); else "records" while its records fit in
+  // (default): "msaa" where the driver can (a cell or union pattern's draws only while their
+  // records fit auto_records_max_bytes); else "records" while its records fit in
   // auto_records_max_bytes (d3d8x on a 4-sample driver: frames 8-41% cheaper than "jittered" on
   // the bench's eleven scenes at 640x480; at 1280x720 the pre-pass of the spider, which covers
   // little of the image, 11% dearer; README, *Jittered draws writing records*); else "jittered" (and
   // "jittered" with prepass_cull). RsaaPass::prepass_in_use() tells which.
   std::string prepass = "auto";
-  // The most GL memory "auto" gives the records of "records" and of a cell pattern's multisample
-  // draw (subsamples x 12 bytes a pixel: 8x at 1920x1080 takes 190 MiB; above this, "auto" takes
+  // The most GL memory "auto" gives the records of "records" and of a cell or union pattern's
+  // multisample draws (subsamples x 12 bytes a pixel: 8x at 1920x1080 takes 190 MiB; above this, "auto" takes
   // "jittered", 4 bytes a pixel). 0: never.
   std::int64_t auto_records_max_bytes = std::int64_t(256) << 20;
   // Culling of the jittered pre-pass (ours): "off" draws every subsample for every pixel (the

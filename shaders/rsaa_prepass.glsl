@@ -9,8 +9,9 @@
 // rsaa_jitter() shifts the image so that the subsample being drawn lands on the pixel centre (the
 // jittered pre-pass, one draw per subsample, each fragment writing its subsample's similarity
 // code); in the multisample pre-pass (RSAA_PREPASS_MSAA: one draw, or two for a union pattern,
-// into multisample targets, the fragment shader run once per pixel) it applies the second union
-// draw's shift, and rsaa_prepass_code() returns the triangle's surface record (primitive,
+// into multisample targets, the fragment shader run once per pixel; for a cell pattern the one
+// draw is a multiple of the image's size, so gl_FragCoord is the raster's there) it applies the
+// second union draw's shift, and rsaa_prepass_code() returns the triangle's surface record (primitive,
 // material, face normal) without reading anything: the pass then turns records and the samples'
 // depths into the same codes with two compute passes (rsaa_prepass_records.glsl), computing
 // similarities only for pixels with a sample on another triangle than the centre's. Each sample's

@@ -51,16 +51,20 @@ TEST(Bench, ParetoFrontAndCheapestTechnique) {
 // cost goals are those multiples), per scene, and says nothing where a scene lacks either baseline.
 TEST(Bench, ReportsRsaasAddedCostAsAMultipleOfMsaas) {
   std::vector<bench::TechniqueResult> r = {row("a", "noaa", 1.0, 30), row("a", "msaa 4x", 2.0, 40),
-                                           row("a", "rsaa 8x", 3.0, 41), row("b", "rsaa 8x", 3.0, 41)};
-  const double frames[] = {10.0, 30.0, 50.0, 50.0};
+                                           row("a", "rsaa 8x", 3.0, 41), row("b", "rsaa 8x", 3.0, 41),
+                                           row("c", "noaa", 1.0, 30), row("c", "msaa 4x", 1.0, 40),
+                                           row("c", "rsaa 8x", 1.0, 41)};
+  const double frames[] = {10.0, 30.0, 50.0, 50.0, 10.0, 9.0, 12.0};
   for (std::size_t i = 0; i < r.size(); ++i) r[i].frame_ms = frames[i];
-  r[2].options = r[3].options = technique_options("rsaa", 8);
+  r[2].options = r[3].options = r[6].options = technique_options("rsaa", 8);
   const std::string report = bench::results_markdown(bench::BenchOptions{}, r);
   const std::size_t from = report.find("Added cost"), to = report.find("Per scene:");
   ASSERT_LT(from, to) << report;
   const std::string added = report.substr(from, to - from);
   EXPECT_NE(added.find("| a | rsaa 8x | 40.0 | 20.0 | 2.00x |"), std::string::npos) << added;
   EXPECT_EQ(added.find("| b |"), std::string::npos) << added;  // no baselines in scene b
+  // 4x MSAA measured no dearer than no AA (noise at tiny sizes): the row stays, without a multiple.
+  EXPECT_NE(added.find("| c | rsaa 8x | 2.0 | -1.0 | - |"), std::string::npos) << added;
 }
 
 TEST(Bench, TinyRunWritesWellFormedResults) {

@@ -110,6 +110,7 @@ TEST(Cli, TrainCellsOfTheDriversPatternMakesTheCheckedInTables) {
   }
   for (const auto& [args, message] :
        {std::pair{"--pattern gl4x --cells 0x2", "is not COLUMNSxROWS"}, std::pair{"--pattern gl4x --cells 12x1", "is not COLUMNSxROWS"},
+        std::pair{"--pattern gl4x --cells 1x1", "more than one cell"},
         std::pair{"--pattern d3d16x --cells 2x1", "tables hold at most 16"},
         std::pair{"--from-scene builtin:edges --cells 1x2", "--cells trains a pattern's table"}}) {
     const auto r = run_rsaa(std::string("train ") + args + " --out-dir " + dir.file("refused"));

@@ -92,6 +92,12 @@ TEST(Conventions, CellPatternsScaleTheBasePatternIntoEachCell) {
   EXPECT_EQ(cell_pattern(tall, 2, 1).name, "custom-d3d4x-tall-wide");  // custom- is not repeated
   EXPECT_THROW(cell_pattern(d3d4x, 0, 2), std::invalid_argument);
   EXPECT_THROW(cell_pattern(builtin_pattern("d3d16x"), 3, 2), std::invalid_argument);  // 96 subsamples
+  try {  // a name that the suffix makes too long is said to be so
+    cell_pattern(pattern_from_positions("custom-" + std::string(55, 'a'), {{0.25, 0.25}}), 2, 1);
+    ADD_FAILURE() << "a 70-character pattern name was made";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("give the pattern a shorter name"), std::string::npos) << e.what();
+  }
   const SamplePattern gl4x = read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/gl4x.json").pattern;
   for (const auto& [file, columns, rows] : {std::tuple{"custom-gl4x-wide", 2, 1}, std::tuple{"custom-gl4x-tall", 1, 2},
                                             std::tuple{"custom-gl4x-quad", 2, 2}}) {

@@ -316,10 +316,16 @@ TEST_F(MsaaPrePass, QuadCellPatternAsOneDrawSameMasksAsJittered) {
     EXPECT_GT(c.edges_jittered, 1000u) << scene;
     EXPECT_LE(c.differing, c.edges_jittered / 50) << scene;
   }
+  // Any cells rsaa train --cells makes take the one draw: 4 x 1 (a draw at four times the width).
+  const RsaaSettings row = with_table(fallback_table(cell_pattern(query_gl_sample_pattern(4), 4, 1)));
+  EXPECT_EQ(RsaaPass(row, kWidth, kHeight).prepass_description(), "msaa, one 4-sample draw at 4x1 cells (1280x240)");
+  const MaskComparison c = compare_prepasses("builtin:default", row, 0);
+  EXPECT_LE(c.differing, c.edges_jittered / 50);
 }
 
 // A cell pattern's draw keeps every subsample's record, as "records" does: "auto" takes it within
-// the same budget, to the byte, and the jittered pre-pass beyond; "msaa" takes it whatever the budget.
+// the same budget, to the byte, and the jittered pre-pass beyond; "msaa" takes it whatever the
+// budget. The same for a union pattern's two draws.
 TEST_F(MsaaPrePass, AutoTakesACellPatternWithinTheRecordsBudget) {
   RsaaSettings settings = with_table(checked_in_table("custom-gl4x-tall"), "auto");
   settings.auto_records_max_bytes = std::int64_t(kWidth) * kHeight * 8 * 12;
@@ -330,6 +336,12 @@ TEST_F(MsaaPrePass, AutoTakesACellPatternWithinTheRecordsBudget) {
   EXPECT_EQ(RsaaPass(settings, kWidth, kHeight).prepass_in_use(), "msaa");
   settings.auto_records_max_bytes = 0;
   EXPECT_TRUE(RsaaPass(settings, kWidth, kHeight).multisample_prepass());
+  // A union pattern's two draws keep as many records: the same budget.
+  RsaaSettings union_settings = with_table(checked_in_table("custom-gl4x-union"), "auto");
+  union_settings.auto_records_max_bytes = std::int64_t(kWidth) * kHeight * 8 * 12;
+  EXPECT_EQ(RsaaPass(union_settings, kWidth, kHeight).prepass_description(), "msaa, two 4-sample draws (a union pattern)");
+  union_settings.auto_records_max_bytes -= 1;
+  EXPECT_EQ(RsaaPass(union_settings, kWidth, kHeight).prepass_in_use(), "jittered");
 }
 
 // A cell pattern's draw beyond what the driver can hold (twice the width past its largest

@@ -72,7 +72,9 @@ done
 {
   echo "${width}x$height, PSNR dB against 64x SSAA; RSAA with today's defaults, each table's pre-pass as \`auto\`"
   echo "takes it on this driver (d3d8x and d3d16x: jittered draws writing records; union: two 4x draws;"
-  echo "wide, tall: one 4x draw at twice the width or height; quad: one at twice both); line RMS: mix cases,"
+  echo "wide, tall: one 4x draw at twice the width or height; quad: one at twice both; the one-draw and"
+  echo "records pre-passes within auto's 256 MiB of records, 12 B a subsample: 16 subsamples up to about"
+  echo "1.4 Mpx, 8 up to 2.8 Mpx; jittered draws beyond); line RMS: mix cases,"
   echo "\`rsaa eval-table\` on $cases fresh cases."
   echo
   printf '| table | subsamples | line RMS |'; printf ' %s |' "${names[@]}"; echo ' mean - d3d8x | lowest - d3d8x |'

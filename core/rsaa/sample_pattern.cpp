@@ -121,12 +121,16 @@ SamplePattern cell_pattern(const SamplePattern& base, int columns, int rows) {
   if (columns == 2 && rows == 1) shape = "wide";
   if (columns == 1 && rows == 2) shape = "tall";
   if (columns == 2 && rows == 2) shape = "quad";
+  const std::string name = "custom-" + stem + "-" + shape;
+  if (name.size() > kMaxPatternNameLength)
+    throw std::invalid_argument("the cell pattern of '" + base.name + "' would be named '" + name + "', longer than " +
+                                std::to_string(kMaxPatternNameLength) + " characters: give the pattern a shorter name");
   std::vector<Vec2> positions;
   for (int row = 0; row < rows; ++row)
     for (int column = 0; column < columns; ++column)
       for (const Vec2& p : base.positions)
         positions.push_back({(column + 0.5 + p.x) / columns - 0.5, (row + 0.5 + p.y) / rows - 0.5});
-  return pattern_from_positions("custom-" + stem + "-" + shape, positions);
+  return pattern_from_positions(name, positions);
 }
 
 PixelStep outside_pixel_towards(Vec2 sample) {

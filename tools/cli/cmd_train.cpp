@@ -153,8 +153,8 @@ int run_train(const TrainArgs& a) {
   if (!a.cells.empty()) {
     // "CxR", each 1..8: the pattern's cells (docs/conventions.md section 1), named custom-BASE-SHAPE.
     if (a.cells.size() != 3 || a.cells[1] != 'x' || a.cells[0] < '1' || a.cells[0] > '8' || a.cells[2] < '1' ||
-        a.cells[2] > '8')
-      throw std::invalid_argument("--cells: '" + a.cells + "' is not COLUMNSxROWS, each 1 to 8 (e.g. 1x2)");
+        a.cells[2] > '8' || a.cells == "1x1")
+      throw std::invalid_argument("--cells: '" + a.cells + "' is not COLUMNSxROWS, each 1 to 8, more than one cell (e.g. 1x2)");
     const int columns = a.cells[0] - '0', rows = a.cells[2] - '0';
     if (std::int64_t(columns) * rows * options.pattern.size() > kMaxTableSamples)
       throw std::invalid_argument("--cells " + a.cells + " of " + options.pattern.name + " (" +
