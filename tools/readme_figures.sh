@@ -181,6 +181,9 @@ goals_steps() {
     $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
     $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
     >"$out/cell-patterns.md"
+  step "cell patterns on 13 more held-out models and mrfixit" cell-patterns-more.md
+  bash tools/cell_patterns.sh --out-dir "$out/cell-patterns-more" "${more_models[@]}" $models/IQM/mrfixit.iqm \
+    >"$out/cell-patterns-more.md"
   step "RSAA's goals on 13 more held-out models" rsaa-goals-more.md
   bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" "${more_models[@]}" >"$out/rsaa-goals-more.md"
 }
