@@ -196,9 +196,14 @@ gl::Texture table_texture(const OffsetTable& table) {
   return texture;
 }
 
-// Whether a multisample texture of `samples` samples gets that many (a driver may round a count
-// up to one it has: its positions are then another pattern's).
-bool driver_has_sample_count(int samples) {
+// Whether the pre-pass can draw into `samples`-sample integer targets: the driver offers that
+// many (at least 2) for integer formats, and a multisample texture of that count gets exactly
+// that many (a driver may round a count up to one it has: its positions are then another pattern's).
+bool driver_offers_samples(int samples) {
+  GLint max_samples = 0, max_integer_samples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
+  if (samples < 2 || samples > max_samples || samples > max_integer_samples) return false;
   const gl::Texture texture = gl::make_texture_2d_multisample(GL_RG32UI, 1, 1, samples);
   GLint actual = 0;
   glGetTextureLevelParameteriv(texture.get(), 0, GL_TEXTURE_SAMPLES, &actual);
@@ -208,11 +213,8 @@ bool driver_has_sample_count(int samples) {
 // Whether the driver can run the pre-pass as one multisample draw for `pattern`: it offers that
 // many samples for integer targets, and its positions for that count are the pattern's.
 bool driver_samples_pattern(const SamplePattern& pattern) {
-  GLint max_samples = 0, max_integer_samples = 0;
-  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
   const int n = pattern.size();
-  if (n < 2 || n > max_samples || n > max_integer_samples || !driver_has_sample_count(n)) return false;
+  if (!driver_offers_samples(n)) return false;
   const SamplePattern driver = query_gl_sample_pattern(n);
   for (int i = 0; i < n; ++i)
     if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
@@ -225,11 +227,8 @@ bool driver_samples_pattern(const SamplePattern& pattern) {
 // `raster` (per shifted sample i: the raster pixel whose sample i sees subsample m + i of pixel
 // P is P + raster[i], window space).
 bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector<glm::ivec2>& raster) {
-  GLint max_samples = 0, max_integer_samples = 0;
-  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
   const int n = pattern.size(), m = n / 2;
-  if (n % 2 != 0 || m < 2 || m > max_samples || m > max_integer_samples || !driver_has_sample_count(m)) return false;
+  if (n % 2 != 0 || !driver_offers_samples(m)) return false;
   const SamplePattern driver = query_gl_sample_pattern(m);
   for (int i = 0; i < m; ++i)
     if (length(driver.positions[i] - pattern.positions[i]) > 1e-6) return false;
@@ -260,10 +259,7 @@ bool driver_samples_union(const SamplePattern& pattern, Vec2& shift, std::vector
 // positions the driver reports unusably (pattern_from_positions refuses them).
 bool driver_samples_cells(const SamplePattern& pattern, int width, int height, glm::ivec2& cells,
                           std::vector<glm::ivec2>& offsets) {
-  GLint max_samples = 0, max_integer_samples = 0, max_depth_samples = 0, max_size[2] = {}, max_framebuffer[2] = {},
-        max_texture = 0;
-  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &max_integer_samples);
+  GLint max_depth_samples = 0, max_size[2] = {}, max_framebuffer[2] = {}, max_texture = 0;
   glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_depth_samples);
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_size);
   glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &max_framebuffer[0]);
@@ -274,12 +270,10 @@ bool driver_samples_cells(const SamplePattern& pattern, int width, int height, g
     for (int columns = 1; columns <= std::min(area, 8); ++columns) {
       const glm::ivec2 c(columns, area / columns);
       const int m = n / area;
-      if (area % columns != 0 || c.y > 8 || n % area != 0 || m < 2 || m > max_samples || m > max_integer_samples ||
-          m > max_depth_samples)
-        continue;
+      if (area % columns != 0 || c.y > 8 || n % area != 0 || m > max_depth_samples) continue;
       const std::int64_t raster_w = std::int64_t(width) * c.x, raster_h = std::int64_t(height) * c.y;
       if (raster_w > std::min({max_size[0], max_framebuffer[0], max_texture}) ||
-          raster_h > std::min({max_size[1], max_framebuffer[1], max_texture}) || !driver_has_sample_count(m))
+          raster_h > std::min({max_size[1], max_framebuffer[1], max_texture}) || !driver_offers_samples(m))
         continue;
       SamplePattern expected;
       try {
