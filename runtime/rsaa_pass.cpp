@@ -70,6 +70,10 @@ struct RsaaPass::Objects {
   gl::Program classify_program, list_size_program, list_resolve_program;
   GLint classify_group[3] = {1, 1, 1};  // the classify program's work group size
   gl::Buffer edge_list;
+  // The pre-passes that write records: the list of the pixels their second record pass codes.
+  // With the compute post-process the record passes also fill `edge_list` as they finish each
+  // pixel's codes, so that the post-process need not read every pixel's codes again.
+  gl::Buffer record_list;
   // Resolving in place (output == the frame's colour): the listed pixels' colours are resolved
   // into `scratch` (made at the first such call, in the output's format: RGBA32F values above half
   // float's range, and every format's values, come back as the separate output's), then copied
@@ -113,6 +117,9 @@ constexpr int kScratchUnit = 9;
 constexpr int kPostUnits = 10;
 // The compute post-process's shader storage binding (the edge list) and image units (output, mask).
 constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
+// The record passes' lists: the pixels to code at kEdgeListBinding, the post-process's edge list here.
+constexpr int kRecordEdgeListBinding = 1;
+constexpr GLint kRecordListEdgesLocation = 1;  // rsaa_prepass_records.glsl's rsaa_list_edges
 // The listing pass's image units (RSAA_CODE_IMAGES): the code textures from kFirstCodeImageUnit
 // on, then the centre normal.
 constexpr int kFirstCodeImageUnit = 2;
@@ -686,8 +693,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     gl_->edge_depth = gl::make_texture_2d(GL_DEPTH_COMPONENT16, width, height);
   }
   // The compute post-process and the record passes of the pre-passes that write surface records
-  // list pixels (one list buffer, used by each in turn). The list packs a pixel's x and y into 16
-  // bits each.
+  // list pixels (a list buffer each). The list packs a pixel's x and y into 16 bits each.
   if ((settings.post == "compute" || writes_records()) && (width > 65536 || height > 65536))
     throw std::invalid_argument("RSAA " + (writes_records() ? "prepass " + settings.prepass : std::string("post compute")) +
                                 ": the pixel list packs coordinates into 16 bits; a " + std::to_string(width) + "x" +
@@ -701,7 +707,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     // on llvmpipe's 128 MiB was refused: the passes then list and resolve in rounds of rows).
     GLint64 max_block = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    make_edge_list(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
+    make_lists(std::min(GLint64(width) * height, (max_block - kListHeadBytes) / 4));
   }
   if (writes_records()) {
     if (!record_units_fit(settings.prepass_first_unit)) {
@@ -747,8 +753,8 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
   else
     bytes += cull_ ? 8.0 : 4.0;  // the draws' depth (+ stencil)
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
-  if (list_capacity_ > 0)
-    bytes += double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);  // the pixel list
+  const int lists = (settings_.post == "compute" ? 1 : 0) + (writes_records() ? 1 : 0);  // (edges, pixels to code)
+  bytes += lists * double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);
   // The scratch, in the colour's format: 8 bytes for RGBA16F (4 for 32-bit formats, 16 for RGBA32F).
   if (settings_.post == "compute" && resolves_in_place) bytes += 8.0;
   return bytes;
@@ -799,6 +805,7 @@ void RsaaPass::make_record_programs(bool record_images) {
   std::string defines = rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_, cells_) +
                         rsaa_record_pass_defines(pattern_, record_first_unit(settings_.prepass_first_unit),
                                                  kFirstCodeImageUnit, kEdgeListBinding);
+  if (settings_.post == "compute") defines += "#define RSAA_EDGE_LIST_BINDING " + std::to_string(kRecordEdgeListBinding) + "\n";
   gl_->record_images = record_images;
   if (record_images)
     defines += "#define RSAA_RECORD_IMAGES " + std::to_string(kFirstCodeImageUnit + int(gl_->codes.size())) + "\n";
@@ -822,7 +829,7 @@ void RsaaPass::codes_from_records() {
   for (int k = 0; k < code_images + (gl_->record_images ? kRecordImages : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
   for (int k = 0; k < record_units; ++k) units.push_back(record_unit + k);
   const gl::SavedState saved(units);
-  const gl::SavedComputeState saved_compute({kEdgeListBinding}, image_units);
+  const gl::SavedComputeState saved_compute({kEdgeListBinding, kRecordEdgeListBinding}, image_units);
   const GLuint records[kRecordUnits] = {gl_->records.get(), gl_->record_depths.get(), gl_->records2.get(),
                                         gl_->record_depths2.get()};
   glBindTextures(GLuint(record_unit), record_units, records);
@@ -836,14 +843,26 @@ void RsaaPass::codes_from_records() {
     for (int d = 0; d < (union_ ? 2 : 1); ++d)
       glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + d), records[2 * d], 0, layered, 0, GL_READ_ONLY,
                          GL_RG32UI);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
-  // Rounds of rows when the list cannot hold every pixel, as the compute post-process does.
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->record_list.get());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->record_list.get());
+  // Rounds of rows when the list cannot hold every pixel, as the compute post-process does. In one
+  // round the record passes list the post-process's edges too (in rounds, the post-process lists
+  // them round by round).
   const int rows = int(std::min<std::int64_t>(height_, list_capacity_ / width_));
+  edges_listed_ = settings_.post == "compute" && rows == height_;
+  if (settings_.post == "compute") {
+    glProgramUniform1i(gl_->record_list_program.get(), kRecordListEdgesLocation, edges_listed_ ? 1 : 0);
+    glProgramUniform1i(gl_->record_codes_program.get(), kRecordListEdgesLocation, edges_listed_ ? 1 : 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRecordEdgeListBinding, gl_->edge_list.get());
+    if (edges_listed_) {
+      const GLuint empty_list[4] = {0, 1, 1, 0};  // rsaa_post_list.glsl's head
+      glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
+    }
+  }
   for (int first = 0; first < height_; first += rows) {
     const int end = std::min(first + rows, height_);
     const GLuint empty_list[4] = {0, 1, 1, 0};
-    glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
+    glNamedBufferSubData(gl_->record_list.get(), 0, sizeof empty_list, empty_list);
     glUseProgram(gl_->record_list_program.get());
     glUniform2i(kRecordRowsLocation, first, end);
     const GLint* group = gl_->record_list_group;
@@ -858,14 +877,15 @@ void RsaaPass::codes_from_records() {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
-  // The post-process (or the engine's) reads the codes next, as images or textures.
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  // The post-process (or the engine's) reads the codes next, as images or textures, and the edge list.
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void RsaaPass::run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw) {
   gl::check_none_pending("RsaaPass::render_subsamples");
   validate_frame(frame, width_, height_, settings_);
   codes_ready_ = false;  // until every draw is done (a callback may throw)
+  edges_listed_ = false;
   prepass_frame_[0] = frame.centre_normal, prepass_frame_[1] = frame.centre_primitive;
   prepass_frame_[2] = frame.centre_depth;
   const int first = settings_.prepass_first_unit;
@@ -1204,13 +1224,28 @@ void RsaaPass::copy_colour(GLuint from, GLuint to) {
   glBlitNamedFramebuffer(source, target, 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-void RsaaPass::make_edge_list(std::int64_t capacity) {
+void RsaaPass::make_lists(std::int64_t capacity) {
   // At least a row: a round lists whole rows.
   list_capacity_ = std::max<std::int64_t>(capacity, width_);
-  GLuint buffer = 0;
-  glCreateBuffers(1, &buffer);
-  gl_->edge_list = gl::Buffer(buffer);
-  glNamedBufferStorage(buffer, GLsizeiptr(kListHeadBytes + 4 * list_capacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  edges_listed_ = false;
+  const auto make_list = [&] {
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(kListHeadBytes + 4 * list_capacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    return gl::Buffer(buffer);
+  };
+  gl_->edge_list = settings_.post == "compute" ? make_list() : gl::Buffer();
+  gl_->record_list = writes_records() ? make_list() : gl::Buffer();
+}
+
+std::vector<std::uint32_t> RsaaPass::edge_list_pixels() const {
+  if (gl_->edge_list.get() == 0) return {};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLuint count = 0;
+  glGetNamedBufferSubData(gl_->edge_list.get(), 12, 4, &count);
+  std::vector<std::uint32_t> pixels(std::min<std::int64_t>(count, list_capacity_));
+  glGetNamedBufferSubData(gl_->edge_list.get(), kListHeadBytes, GLsizeiptr(4 * pixels.size()), pixels.data());
+  return pixels;
 }
 
 // Image stores into an incomplete texture are invalid (GL 4.5 section 8.26), and a texture made
@@ -1319,19 +1354,23 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
   for (int first = 0; first < height_; first += rows) {
     const int end = std::min(first + rows, height_);
-    // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
-    const GLuint empty_list[4] = {0, 1, 1, 0};
-    glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
-    glUseProgram(gl_->classify_program.get());
-    for (int k = 0; k < code_images; ++k)
-      glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
-                         GL_READ_ONLY, code_format(settings_.code_bits));
-    glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
-                       GL_RG16UI);
-    glUniform2i(kClassifyRowsLocation, first, end);
-    const GLint* group = gl_->classify_group;
-    glDispatchCompute(GLuint((width_ + group[0] - 1) / group[0]), GLuint((end - first + group[1] - 1) / group[1]), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // The pre-pass's record passes listed the edges already (one round), or the listing pass
+    // does, from the codes.
+    if (!edges_listed_) {
+      // The list's head (rsaa_post_list.glsl): 0 x 1 x 1 groups, 0 pixels.
+      const GLuint empty_list[4] = {0, 1, 1, 0};
+      glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
+      glUseProgram(gl_->classify_program.get());
+      for (int k = 0; k < code_images; ++k)
+        glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
+                           GL_READ_ONLY, code_format(settings_.code_bits));
+      glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
+                         GL_RG16UI);
+      glUniform2i(kClassifyRowsLocation, first, end);
+      const GLint* group = gl_->classify_group;
+      glDispatchCompute(GLuint((width_ + group[0] - 1) / group[0]), GLuint((end - first + group[1] - 1) / group[1]), 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
     glUseProgram(gl_->list_size_program.get());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);

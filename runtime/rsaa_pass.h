@@ -108,7 +108,7 @@
 // the pre-pass's three units, the uniform buffer binding, and for the compute post-process the
 // shader storage buffer at binding 0 (and the generic one), the image units it binds (0-7 at most:
 // outputs, codes, records) and the indirect-dispatch buffer, and for the record passes of the
-// multisample and "records" pre-passes their texture units too (every texture target of each
+// multisample and "records" pre-passes those, the storage buffer at binding 1 and their texture units too (every texture target of each
 // unit saved: 2D, cube map, 3D and the rest); the engine's scissor, masks,
 // culling and samplers do not reach the pass. (A program the engine deleted while current cannot
 // be restored: none is current after.)
@@ -234,7 +234,8 @@ struct RsaaSettings {
   // outputs, within one step into 8- and 10-bit ones, whose rounding or sRGB encoding is the
   // driver's in the fragment paths and the shader's in the compute one): "compute"
   // (default) copies the colour image, lists the pixels whose mask is not all-similar with a
-  // compute shader, then resolves the listed pixels only (a second, indirect dispatch; it binds
+  // compute shader (after a pre-pass that writes records, whose record passes list them as they
+  // make the codes, no listing pass), then resolves the listed pixels only (an indirect dispatch; it binds
   // shader storage buffer 0 and image units 0 and 1, the listing pass also the codes and the centre
   // normal as images from unit 2, meanwhile, restored after); "edges" copies,
   // then an edge pass marks those pixels in a depth target and the resolve runs behind an early
@@ -377,9 +378,12 @@ class RsaaPass {
   void write_frame_uniforms(const RsaaFrame& frame) const;
   void resolve_edge_list(const RsaaFrame& frame, GlName output, GlName mask_output);
   void copy_colour(GlName from, GlName to);
-  // The compute post-process's edge list, for `capacity` pixels (at least a row).
-  void make_edge_list(std::int64_t capacity);
+  // The compute post-process's edge list and the record passes' list of pixels to code, for
+  // `capacity` pixels each (at least a row; fewer than the image's: both work in rounds of rows).
+  void make_lists(std::int64_t capacity);
   friend struct RsaaPassTesting;  // tests/test_rsaa_pass_api.cpp: an edge list smaller than the image
+  // The compute post-process's edge list as it is (x | y << 16 per pixel, in list order).
+  std::vector<std::uint32_t> edge_list_pixels() const;
   void clear_to_all_similar(GlName mask_output) const;
   // Sets up the pre-pass and calls `draw` once per subsample (jittered) or once with -1.
   void run_prepass(const RsaaFrame& frame, const std::function<void(int subsample, glm::vec2 jitter_ndc)>& draw);
@@ -409,7 +413,9 @@ class RsaaPass {
   bool codes_ready_ = false;  // a pre-pass finished: the code textures hold its codes
   mutable std::string prepass_signature_;  // prepass_signature(), made at its first call
   GlName prepass_frame_[3] = {};  // its frame's centre_normal, centre_primitive, centre_depth
-  std::int64_t list_capacity_ = 0;  // pixels the edge list holds (compute post-process)
+  std::int64_t list_capacity_ = 0;  // pixels each list holds (compute post-process, record passes)
+  // The last pre-pass's record passes listed the compute post-process's edges (one round).
+  bool edges_listed_ = false;
   int width_, height_;
   std::unique_ptr<Objects> gl_;
 };

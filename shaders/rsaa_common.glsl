@@ -147,6 +147,27 @@ float rsaa_decode_similarity(uint code, bool centre_is_surface) {
 }
 
 #ifdef RSAA_SAMPLE_COUNT
+// What rsaa_classify() makes of a pixel's codes, told without decoding each subsample or
+// splitting (a decoded similarity grows with its code, so the largest similarity is the largest
+// code's, or a code 0's: 1e9 beside a surface centre, 0 beside the background):
+// RSAA_CODES_ALL_SIMILAR, RSAA_CODES_EDGE, or RSAA_CODES_EDGE_IF_CENTRE_IS_SURFACE (a code 0
+// decides), so that a caller reads the centre's normal only then. Where the split's rounding makes
+// a mask all-similar although the largest similarity is above the threshold this says edge: the
+// resolve then keeps the colour all the same. The post-process's edge test
+// (rsaa_pixel_has_edge()) and the record passes, which list the edge pixels as they make the codes.
+#define RSAA_CODES_ALL_SIMILAR 0
+#define RSAA_CODES_EDGE 1
+#define RSAA_CODES_EDGE_IF_CENTRE_IS_SURFACE 2
+int rsaa_codes_edge(uint codes[RSAA_SAMPLE_COUNT], float threshold) {
+  uint largest = 0u, smallest = 0xffffffffu;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) largest = max(largest, codes[i]), smallest = min(smallest, codes[i]);
+  // A code >= 1 decodes alike whatever the centre shows.
+  if (largest > 1u && rsaa_decode_similarity(largest, true) > threshold) return RSAA_CODES_EDGE;
+  if (smallest != 0u) return RSAA_CODES_ALL_SIMILAR;
+  if (rsaa_decode_similarity(0u, false) > threshold) return RSAA_CODES_EDGE;
+  return rsaa_decode_similarity(0u, true) > threshold ? RSAA_CODES_EDGE_IF_CENTRE_IS_SURFACE : RSAA_CODES_ALL_SIMILAR;
+}
+
 // ---- classification (paper section 2.2): one k-means step. Returns the similarity mask, or
 // the all-similar mask when no subsample exceeds the threshold.
 uint rsaa_classify(float similarity[RSAA_SAMPLE_COUNT], float threshold, out float split) {

@@ -286,27 +286,19 @@ uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out u
 }
 
 // Whether rsaa_resolve() does more than keep the pixel's colour: the test the edge pass runs on
-// every pixel (rsaa_post_edges.frag, rsaa_post_classify.comp). rsaa_pixel_mask() !=
-// RSAA_ALL_SIMILAR without decoding each subsample or splitting: a decoded similarity grows with
-// its code, so rsaa_classify's largest similarity is that of the largest code, or a code 0's (1e9
-// beside a surface centre). Only a code 0 needs the centre's normal (is the centre a surface?):
-// on a driver that branches per pixel, most pixels read their codes only. Where the split's
-// rounding makes a mask all-similar although the largest similarity is above the threshold,
-// this says true: the resolve then keeps the colour all the same.
+// every pixel (rsaa_post_edges.frag, rsaa_post_classify.comp), rsaa_pixel_mask() !=
+// RSAA_ALL_SIMILAR as rsaa_codes_edge() tells it. Only a code 0 needs the centre's normal (is the
+// centre a surface?): on a driver that branches per pixel, most pixels read their codes only.
 bool rsaa_pixel_has_edge(ivec2 pixel) {
   uint codes[RSAA_SAMPLE_COUNT];
   rsaa_pixel_codes(pixel, codes);
-  uint largest = 0u, smallest = 0xffffffffu;
-  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) largest = max(largest, codes[i]), smallest = min(smallest, codes[i]);
-  // A code >= 1 decodes alike whatever the centre shows.
-  if (largest > 1u && rsaa_decode_similarity(largest, true) > rsaa_threshold) return true;
-  if (smallest != 0u) return false;
+  int edge = rsaa_codes_edge(codes, rsaa_threshold);
+  if (edge != RSAA_CODES_EDGE_IF_CENTRE_IS_SURFACE) return edge == RSAA_CODES_EDGE;
 #ifdef RSAA_READS_CODE_IMAGES
-  bool centre_is_surface = rsaa_is_surface(imageLoad(rsaa_centre_normal_image, pixel).xy);
+  return rsaa_is_surface(imageLoad(rsaa_centre_normal_image, pixel).xy);
 #else
-  bool centre_is_surface = rsaa_is_surface(texelFetch(rsaa_post_centre_normal, pixel, 0).xy);
+  return rsaa_is_surface(texelFetch(rsaa_post_centre_normal, pixel, 0).xy);
 #endif
-  return rsaa_decode_similarity(0u, centre_is_surface) > rsaa_threshold;
 }
 
 vec4 rsaa_resolve(ivec2 pixel, out uint mask) {

@@ -1,5 +1,6 @@
 // The multisample pre-pass's second record pass (rsaa_prepass_records.glsl): every code of each
-// pixel rsaa_prepass_list.comp listed, as the jittered pre-pass computes it.
+// pixel rsaa_prepass_list.comp listed, as the jittered pre-pass computes it, and the pixel in the
+// post-process's edge list when they make an edge (RSAA_EDGE_LIST_BINDING).
 #include "rsaa_prepass_records.glsl"
 
 layout(local_size_x = 64) in;
@@ -23,4 +24,5 @@ void main() {
     codes[i] = rsaa_record_is_surface(record) ? rsaa_record_code(pixel, i, point, record, centre) : 0u;
   }
   rsaa_store_codes(pixel, codes);
+  rsaa_list_if_edge(pixel, codes);
 }

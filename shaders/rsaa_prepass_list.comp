@@ -1,6 +1,7 @@
 // The multisample pre-pass's first record pass (rsaa_prepass_records.glsl): per pixel, the codes
 // its records tell alone, and the pixel listed when a sample lies on another triangle than the
-// centre's (or another material, with material edges).
+// centre's (or another material, with material edges); a pixel not listed, whose codes are
+// final, goes to the post-process's edge list when they make an edge (RSAA_EDGE_LIST_BINDING).
 #include "rsaa_prepass_records.glsl"
 
 // (RsaaPass reads the group size from the program.)
@@ -22,7 +23,10 @@ void main() {
     else if (!rsaa_record_on_centres_triangle(record, centre_surface)) listed = true;
   }
   rsaa_store_codes(pixel, codes);
-  if (!listed) return;
+  if (!listed) {  // these codes are final (0 or 1)
+    rsaa_list_if_edge(pixel, codes);
+    return;
+  }
   uint slot = atomicAdd(rsaa_list_count, 1u);
   rsaa_list_pixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16u);
 }

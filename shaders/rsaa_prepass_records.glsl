@@ -22,10 +22,14 @@
 //                            driver's GL_MAX_IMAGE_SAMPLES and image units allow: on llvmpipe an
 //                            image load costs less than a texel fetch)
 //   RSAA_LIST_BINDING        the list's storage buffer (rsaa_post_list.glsl)
+//   RSAA_EDGE_LIST_BINDING   (optional) a second list of the same layout, the post-process's edge
+//                            list: each pass appends the pixels whose codes it finished and whose
+//                            mask is not all-similar (rsaa_codes_edge()), so that RsaaPass's
+//                            compute post-process does not read every pixel's codes again
 //   RSAA_SUBSAMPLE_WINDOWS   vec2[](...): per subsample, its point in the pixel, window space from
 //                            the lower-left corner (0.5 + its pattern position, +y up)
-// (rsaa_record_pass_defines() in runtime/rsaa_pass.h writes these.) Uniform: rsaa_rows (location
-// 0), the rows [x, y) a dispatch covers.
+// (rsaa_record_pass_defines() in runtime/rsaa_pass.h writes these.) Uniforms: rsaa_rows (location
+// 0), the rows [x, y) a dispatch covers; with RSAA_EDGE_LIST_BINDING rsaa_list_edges (location 1).
 #ifndef RSAA_PREPASS_RECORDS_GLSL
 #define RSAA_PREPASS_RECORDS_GLSL
 
@@ -144,6 +148,31 @@ float rsaa_record_depth(int i, ivec2 raster, int sample_index) {
   if (i >= RSAA_MS_SAMPLES) return RSAA_RECORD_FETCH(rsaa_record_depths2, raster, sample_index).x;
 #endif
   return RSAA_RECORD_FETCH(rsaa_record_depths, raster, sample_index).x;
+}
+
+#ifdef RSAA_EDGE_LIST_BINDING
+layout(std430, binding = RSAA_EDGE_LIST_BINDING) buffer RsaaPostEdgeList {
+  uint rsaa_edge_list_groups[3];  // (set by rsaa_post_list_size.comp before the resolve)
+  uint rsaa_edge_list_count;
+  uint rsaa_edge_list_pixels[];
+};
+// Whether this pre-pass lists the edges (RsaaPass lists them there when its list holds every
+// pixel; else its post-process lists them in rounds of rows).
+layout(location = 1) uniform bool rsaa_list_edges;
+#endif
+
+// Appends `pixel` to the post-process's edge list when its final codes make a mask other than
+// all-similar (the post-process's rsaa_pixel_has_edge() on them); nothing without the list.
+void rsaa_list_if_edge(ivec2 pixel, uint codes[RSAA_SAMPLE_COUNT]) {
+#ifdef RSAA_EDGE_LIST_BINDING
+  if (!rsaa_list_edges) return;
+  int edge = rsaa_codes_edge(codes, rsaa_threshold);
+  if (edge == RSAA_CODES_EDGE_IF_CENTRE_IS_SURFACE)
+    edge = rsaa_is_surface(texelFetch(rsaa_centre_normal, pixel, 0).xy) ? RSAA_CODES_EDGE : RSAA_CODES_ALL_SIMILAR;
+  if (edge != RSAA_CODES_EDGE) return;
+  uint slot = atomicAdd(rsaa_edge_list_count, 1u);
+  rsaa_edge_list_pixels[slot] = uint(pixel.x) | (uint(pixel.y) << 16u);
+#endif
 }
 
 void rsaa_store_codes(ivec2 pixel, uint codes[RSAA_SAMPLE_COUNT]) {

@@ -19,6 +19,23 @@
 #include "runtime/shader_library.h"
 
 namespace rsaa {
+
+// The pass's internals a test reaches (RsaaPass's friend).
+struct RsaaPassTesting {
+  static void set_edge_list_capacity(RsaaPass& pass, std::int64_t pixels) { pass.make_lists(pixels); }
+  // The multisample pre-pass's record passes as on a driver without multisample image loads.
+  static void read_records_as_textures(RsaaPass& pass) { pass.make_record_programs(false); }
+  // The pixels (x + y * width) the last pre-pass's record passes put in the compute post-process's
+  // edge list, sorted; nullopt when that pre-pass listed none (the post-process lists them).
+  static std::optional<std::vector<std::uint32_t>> prepass_edge_list(const RsaaPass& pass, int width) {
+    if (!pass.edges_listed_) return std::nullopt;
+    std::vector<std::uint32_t> pixels = pass.edge_list_pixels();
+    for (std::uint32_t& p : pixels) p = (p & 0xffffu) + (p >> 16) * std::uint32_t(width);
+    std::sort(pixels.begin(), pixels.end());
+    return pixels;
+  }
+};
+
 namespace {
 
 constexpr int kWidth = 64, kHeight = 48;
@@ -315,6 +332,8 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   // The units the listing pass reads the codes and the normal through (2 to 4 with 8 subsamples).
   for (GLuint unit : {2u, 3u, 4u}) glBindImageTexture(unit, engine_texture.get(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, engine_buffer.get(), 64, 128);
+  // The record passes' second list (the post-process's edges, listed by the pre-pass).
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 1, engine_buffer.get(), 128, 64);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, engine_buffer.get());
   const gl::Buffer engine_generic_buffer = [] {
     GLuint b = 0;
@@ -445,6 +464,12 @@ TEST_F(RsaaPassApi, TheEngineGlStateIsRestored) {
   glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, 0, &storage_start);
   glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, 0, &storage_size);
   glGetIntegerv(GL_DISPATCH_INDIRECT_BUFFER_BINDING, &indirect);
+  GLint storage1 = 0;
+  GLint64 storage1_start = 0;
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 1, &storage1);
+  glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, 1, &storage1_start);
+  EXPECT_EQ(GLuint(storage1), engine_buffer.get());
+  EXPECT_EQ(storage1_start, 128);
   EXPECT_EQ(GLuint(image0), engine_texture.get());
   EXPECT_EQ(image0_access, GL_READ_ONLY);
   EXPECT_EQ(GLuint(image1), engine_array.get());
@@ -1030,7 +1055,9 @@ TEST_F(RsaaPassApi, AnIncompleteOutputWorksAndABaseLevelIsRefused) {
 // The edge pass's test (rsaa_pixel_has_edge: the largest and smallest code) against the mask
 // (rsaa_pixel_mask: every subsample decoded, then split), per pixel of the same pre-pass. Too few
 // marked pixels would change the image (the test above); too many would only cost time, and the
-// two are equal but for rounding of the split, which these scenes do not reach.
+// two are equal but for rounding of the split, which these scenes do not reach. The pre-passes
+// that write records list the edge pixels as they make the codes (the compute post-process then
+// lists nothing): exactly the pixels the edge test passes.
 TEST_F(RsaaPassApi, TheEdgePassMarksExactlyThePixelsWhoseMaskIsNotAllSimilar) {
   constexpr int width = 160, height = 120;
   const std::string probe_main =
@@ -1044,13 +1071,19 @@ TEST_F(RsaaPassApi, TheEdgePassMarksExactlyThePixelsWhoseMaskIsNotAllSimilar) {
       "}\n";
   for (const char* scene_name : {"builtin:default", "builtin:fence", "builtin:grazing"}) {
     const test::SceneFrame scene(scene_name, width, height);
-    RsaaSettings depth_4x, wide_codes, background_only;
+    RsaaSettings depth_4x, wide_codes, background_only, multisample, jittered;
     depth_4x.pattern = "d3d4x", depth_4x.similarity = "depth";
     wide_codes.code_bits = 16;
     background_only.threshold = 1.5f;  // most surface edges stay below: the code-0 rule decides
-    for (const RsaaSettings& settings : {RsaaSettings{}, depth_4x, wide_codes, background_only}) {
+    multisample.pattern = "gl4x", multisample.prepass = "msaa";
+    jittered.prepass = "jittered";
+    for (const RsaaSettings& settings : {RsaaSettings{}, depth_4x, wide_codes, background_only, multisample, jittered}) {
       RsaaPass pass(settings, width, height);
       scene.render_subsamples(pass);
+      // The pre-passes that write records list the edges themselves (the post-process then reads
+      // no codes of edge-free pixels); the jittered one leaves it to the post-process.
+      const std::optional<std::vector<std::uint32_t>> listed = RsaaPassTesting::prepass_edge_list(pass, width);
+      EXPECT_EQ(listed.has_value(), settings.prepass != "jittered");
       const int samples = pass.pattern().size();
       const gl::Program probe = gl::make_program(
           {{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
@@ -1082,16 +1115,22 @@ TEST_F(RsaaPassApi, TheEdgePassMarksExactlyThePixelsWhoseMaskIsNotAllSimilar) {
       glGetTextureImage(result.get(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(pairs.size() * 4), pairs.data());
       gl::check("edge test probe");
       int edges = 0, missed = 0, extra = 0;
+      std::vector<std::uint32_t> edge_pixels;
       for (std::size_t p = 0; p < pairs.size(); p += 2) {
         edges += pairs[p + 1] != 0;
         missed += pairs[p] == 0 && pairs[p + 1] != 0;
         extra += pairs[p] != 0 && pairs[p + 1] == 0;
+        if (pairs[p] != 0) edge_pixels.push_back(std::uint32_t(p / 2));
       }
       SCOPED_TRACE(std::string(scene_name) + " " + pass.pattern().name + " " + settings.similarity + " " +
                    std::to_string(settings.code_bits) + "-bit codes, threshold " + std::to_string(settings.threshold));
       EXPECT_GT(edges, 50);
       EXPECT_EQ(missed, 0);
       EXPECT_EQ(extra, 0);
+      // Each pixel the edge test passes, once.
+      if (listed) {
+        EXPECT_EQ(*listed, edge_pixels);
+      }
     }
   }
 }
@@ -1174,13 +1213,6 @@ TEST_F(RsaaPassApi, ZeroToOneAndReverseZDepthGiveTheDefaultMasks) {
 }  // namespace rsaa
 
 namespace rsaa {
-
-// The pass's internals a test reaches (RsaaPass's friend).
-struct RsaaPassTesting {
-  static void set_edge_list_capacity(RsaaPass& pass, std::int64_t pixels) { pass.make_edge_list(pixels); }
-  // The multisample pre-pass's record passes as on a driver without multisample image loads.
-  static void read_records_as_textures(RsaaPass& pass) { pass.make_record_programs(false); }
-};
 
 namespace {
 

@@ -78,7 +78,8 @@ TEST_F(Runtime, EveryRegisteredTechniqueMakesItselfAndRendersAFrame) {
 // The memory RSAA reports counts every buffer it keeps per pixel: the frame's targets (colour 8,
 // normal 4, primitive and material 8, depth 4), the codes (8 subsamples, 8 bits), the pre-pass
 // depth (4), and per post-process: the edge list (4 a pixel and a 16-byte header) and the scratch
-// image of the in-place resolve (8), or the edge pass's depth (2) and no scratch.
+// image of the in-place resolve (8), or the edge pass's depth (2) and no scratch. The pre-passes
+// that write records keep a second list, of the pixels their record passes code.
 TEST_F(Runtime, RsaaMemoryCountsEveryBufferItKeeps) {
   const int w = 40, h = 30;
   const double list = 4.0 + 16.0 / (w * h);
@@ -95,20 +96,20 @@ TEST_F(Runtime, RsaaMemoryCountsEveryBufferItKeeps) {
   settings.prepass_cull = "neighbours";  // depth and stencil
   EXPECT_DOUBLE_EQ(make_rsaa(settings, w, h)->bytes_per_pixel(), 20 + 16 + 8);
   // The multisample pre-pass (gl4x): the codes, and per sample a record (8, with material edges
-  // the material packed in) and a depth (4); the pixel list of its record passes even without the
-  // compute post-process.
+  // the material packed in) and a depth (4); the pixel list of its record passes beside the edge
+  // list, and without the compute post-process.
   RsaaSettings multisample;
   multisample.pattern = "gl4x", multisample.prepass = "msaa", multisample.material_edges = true;
-  EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 24 + 4 + 4 * 12 + list + 8);
+  EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 24 + 4 + 4 * 12 + 2 * list + 8);
   multisample.material_edges = false, multisample.post = "single";
   EXPECT_DOUBLE_EQ(make_rsaa(multisample, w, h)->bytes_per_pixel(), 20 + 4 + 4 * 12 + list);
   // d3d8x's jittered draws writing records: the same per subsample, in layers; "auto"'s choice
   // for d3d8x on a driver without 8x MSAA (as here), and within its budget.
   RsaaSettings records;
   records.prepass = "records", records.material_edges = true;
-  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 12 + list + 8);
+  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 12 + 2 * list + 8);
   records.prepass = "auto";
-  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 12 + list + 8);
+  EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 8 * 12 + 2 * list + 8);
   records.auto_records_max_bytes = 0;
   EXPECT_DOUBLE_EQ(make_rsaa(records, w, h)->bytes_per_pixel(), 24 + 8 + 4 + list + 8);
 }
