@@ -65,6 +65,47 @@ TEST(Bench, ReportsRsaasAddedCostAsAMultipleOfMsaas) {
   EXPECT_EQ(added.find("| b |"), std::string::npos) << added;  // no baselines in scene b
   // 4x MSAA measured no dearer than no AA (noise at tiny sizes): the row stays, without a multiple.
   EXPECT_NE(added.find("| c | rsaa 8x | 2.0 | -1.0 | - |"), std::string::npos) << added;
+  // The baselines' frames timed in the RSAA row's own rounds decide where a run has them.
+  r[2].paired_noaa_ms = 20.0, r[2].paired_msaa_ms = 60.0;
+  const std::string paired = bench::results_markdown(bench::BenchOptions{}, r);
+  EXPECT_NE(paired.find("| a | rsaa 8x | 30.0 | 40.0 | 0.75x |"), std::string::npos) << paired;
+}
+
+// A technique for the timing rounds: renders nothing, logs its name, times one pass.
+class LoggedTechnique : public Technique {
+ public:
+  LoggedTechnique(std::string name, std::vector<std::string>& log) : name_(std::move(name)), log_(log) {}
+  void render(const GpuScene&, const View&, GLuint) override {
+    timer_.begin(name_);
+    timer_.end();
+    log_.push_back(name_);
+  }
+  double bytes_per_pixel() const override { return 0.0; }
+
+ private:
+  std::string name_;
+  std::vector<std::string>& log_;
+};
+
+// Timing in rounds: a warm-up frame of each technique, then every technique one frame a round,
+// the order rotated by one each round; one timing per technique, in order, its own pass.
+TEST(Bench, TimingRoundsInterleaveTheTechniquesFrames) {
+  gl::HeadlessContext context;
+  std::vector<std::string> log;
+  LoggedTechnique a("a", log), b("b", log), c("c", log);
+  const GpuScene scene(load_scene("builtin:edges"));
+  const View view = make_view(choose_camera(load_scene("builtin:edges"), std::nullopt), 16, 12);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, 16, 12);
+  bench::CopyPass copy(16, 12);
+  const std::vector<bench::FrameTiming> timings = bench::time_rounds({&a, &b, &c}, scene, view, output.get(), 3, copy);
+  EXPECT_EQ(log, (std::vector<std::string>{"a", "b", "c", "a", "b", "c", "b", "c", "a", "c", "a", "b"}));
+  ASSERT_EQ(timings.size(), 3u);
+  const char* names[] = {"a", "b", "c"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    ASSERT_EQ(timings[i].pass_medians.size(), 1u);
+    EXPECT_EQ(timings[i].pass_medians[0].pass, names[i]);
+    EXPECT_GT(timings[i].copy_ms, 0.0);
+  }
 }
 
 TEST(Bench, TinyRunWritesWellFormedResults) {
@@ -80,6 +121,10 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   ASSERT_EQ(results.size(), 6u);
   EXPECT_DOUBLE_EQ(results[0].frame_ratio, 1.0);
   for (const auto& r : results) {
+    // No AA's and 4x MSAA's frames timed in every row's rounds; the ratio is against no AA's.
+    EXPECT_GT(r.paired_noaa_ms, 0.0) << r.label;
+    EXPECT_GT(r.paired_msaa_ms, 0.0) << r.label;
+    EXPECT_DOUBLE_EQ(r.frame_ratio, r.frame_ms / r.paired_noaa_ms) << r.label;
     EXPECT_GT(r.psnr_db, 10.0) << r.label;
     EXPECT_LE(r.psnr_db, 99.0) << r.label;
     EXPECT_GT(r.flicker_psnr_db, 0.0) << r.label;
@@ -93,8 +138,9 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   const auto json = nlohmann::json::parse(bench::results_json(o, results));
   EXPECT_EQ(json.at("format"), "rsaa-bench");
   ASSERT_EQ(json.at("results").size(), 6u);
-  for (const char* key : {"scene", "technique", "passes", "frame_ms", "frame_ratio_to_noaa", "psnr_db", "ssim",
-                          "luma_error_share_percent", "orbit_psnr_db", "flicker_psnr_db", "bytes_per_pixel", "pareto"})
+  for (const char* key : {"scene", "technique", "passes", "frame_ms", "frame_ratio_to_noaa", "paired_noaa_ms",
+                          "paired_msaa_4x_ms", "psnr_db", "ssim", "luma_error_share_percent", "orbit_psnr_db",
+                          "flicker_psnr_db", "bytes_per_pixel", "pareto"})
     EXPECT_TRUE(json["results"][0].contains(key)) << key;
   for (const auto& pass : json["results"][1].at("passes"))
     EXPECT_DOUBLE_EQ(pass.at("copy_multiple").get<double>(),
@@ -130,7 +176,8 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
   const std::vector<std::pair<std::string, nlohmann::json>> edits = {
       {"psnr_db", -3e9},          {"psnr_db", 2147483646.0}, {"psnr_db", nullptr},         {"frame_ms", -1.0},
       {"frame_ratio_to_noaa", -5.0}, {"frame_ratio_to_noaa", 1e300}, {"ssim", 2.0},          {"orbit_psnr_db", "40"},
-      {"flicker_psnr_db", 1e10},  {"luma_error_share_percent", 101.0}, {"bytes_per_pixel", -8.0}, {"copy_ms", 1e300}};
+      {"flicker_psnr_db", 1e10},  {"luma_error_share_percent", 101.0}, {"bytes_per_pixel", -8.0}, {"copy_ms", 1e300},
+      {"paired_noaa_ms", -1.0},   {"paired_msaa_4x_ms", "12"}};
   for (const auto& [field, value] : edits) {
     nlohmann::json edited = json;
     edited["results"][3][field] = value;
@@ -278,6 +325,22 @@ TEST(BenchGrowth, TinyRunWritesEveryPoint) {
   bench::plot_growth(r, bench::GrowthAxis::Triangles, dir.file("triangles.png"));
   EXPECT_GT(std::filesystem::file_size(dir.file("pixels.png")), 1000u);
   EXPECT_GT(std::filesystem::file_size(dir.file("triangles.png")), 1000u);
+
+  // More techniques than one round makes at once: timed in groups, each with the baselines; every
+  // technique's point once, in the techniques' order.
+  o.techniques = {technique_options("noaa"),    technique_options("fxaa"),      technique_options("msaa", 4),
+                  technique_options("ssaa", 8), technique_options("rsaa", 4),   technique_options("rsaa", 8),
+                  technique_options("agaa", 4), technique_options("ssaa", 16)};
+  o.sizes = {{16, 12}};
+  o.subdivision_levels = {};
+  o.light_counts = {};
+  const auto grouped = bench::run_growth(o, nullptr);
+  ASSERT_EQ(grouped.points.size(), o.techniques.size());
+  for (std::size_t i = 0; i < o.techniques.size(); ++i) {
+    EXPECT_EQ(grouped.points[i].label, technique_label(o.techniques[i]));
+    EXPECT_GT(grouped.points[i].frame_ms, 0.0) << grouped.points[i].label;
+    EXPECT_EQ(grouped.points[i].width, 16);
+  }
 }
 
 TEST(BenchLights, PointLightsShadeAsTheCpuTwin) {

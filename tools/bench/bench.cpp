@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <cstdio>
 #include <sstream>
 
@@ -23,6 +24,8 @@ namespace rsaa::bench {
 namespace {
 
 constexpr double kIdenticalDb = 99.0;  // PSNR reported for identical images
+// The label of the second baseline: what RSAA's added cost is compared with.
+const char* const kMsaaBaseline = "msaa 4x";
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -103,35 +106,47 @@ std::vector<std::string> default_scenes() {
   return scenes;
 }
 
-FrameTiming time_frames(Technique& t, const GpuScene& gpu, const View& view, GLuint output, int frames,
-                        CopyPass& copy) {
-  t.render(gpu, view, output);  // warm-up: shader compilation
-  t.take_pass_times();
-  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> per_pass;
-  std::vector<std::string> pass_order;
-  std::vector<double> frame_ms, copy_ms;
-  for (int k = 0; k < frames; ++k) {
-    t.render(gpu, view, output);
-    double sum = 0.0;
-    for (const PassTime& p : t.take_pass_times()) {
-      if (!per_pass.count(p.pass)) pass_order.push_back(p.pass);
-      per_pass[p.pass].first.push_back(p.wall_milliseconds);
-      per_pass[p.pass].second.push_back(p.milliseconds);
-      sum += p.wall_milliseconds;
+std::vector<FrameTiming> time_rounds(const std::vector<Technique*>& techniques, const GpuScene& gpu,
+                                     const View& view, GLuint output, int frames, CopyPass& copy) {
+  struct Samples {
+    std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> per_pass;
+    std::vector<std::string> pass_order;
+    std::vector<double> frame_ms, copy_ms;
+  };
+  const std::size_t n = techniques.size();
+  std::vector<Samples> samples(n);
+  for (Technique* t : techniques) {  // warm-up: shader compilation
+    t->render(gpu, view, output);
+    t->take_pass_times();
+  }
+  for (int k = 0; k < frames; ++k)
+    for (std::size_t step = 0; step < n; ++step) {
+      const std::size_t i = (step + std::size_t(k)) % n;
+      Samples& s = samples[i];
+      techniques[i]->render(gpu, view, output);
+      double sum = 0.0;
+      for (const PassTime& p : techniques[i]->take_pass_times()) {
+        if (!s.per_pass.count(p.pass)) s.pass_order.push_back(p.pass);
+        s.per_pass[p.pass].first.push_back(p.wall_milliseconds);
+        s.per_pass[p.pass].second.push_back(p.milliseconds);
+        sum += p.wall_milliseconds;
+      }
+      s.frame_ms.push_back(sum);
+      // Beside every frame, so that the ratio sees the same load on the shared machine.
+      s.copy_ms.push_back(copy.time_ms(output));
     }
-    frame_ms.push_back(sum);
-    // Beside every frame, so that the ratio sees the same load on the shared machine.
-    copy_ms.push_back(copy.time_ms(output));
+  std::vector<FrameTiming> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Samples& s = samples[i];
+    for (const std::string& pass : s.pass_order) {
+      const std::vector<double>& queries = s.per_pass[pass].second;
+      const bool all_plausible = std::find(queries.begin(), queries.end(), kNoTimerQuery) == queries.end();
+      out[i].pass_medians.push_back(
+          {pass, all_plausible ? median(queries) : kNoTimerQuery, median(s.per_pass[pass].first)});
+    }
+    out[i].frame_ms = median(s.frame_ms);
+    out[i].copy_ms = median(s.copy_ms);
   }
-  FrameTiming out;
-  for (const std::string& pass : pass_order) {
-    const std::vector<double>& queries = per_pass[pass].second;
-    const bool all_plausible = std::find(queries.begin(), queries.end(), kNoTimerQuery) == queries.end();
-    out.pass_medians.push_back(
-        {pass, all_plausible ? median(queries) : kNoTimerQuery, median(per_pass[pass].first)});
-  }
-  out.frame_ms = median(frame_ms);
-  out.copy_ms = median(copy_ms);
   return out;
 }
 
@@ -169,23 +184,41 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
     }
     ++done;
 
-    double noaa_ms = 0.0;
+    // The baselines, kept for the scene and timed in every technique's rounds: no AA (the frame
+    // ratio's) and 4x MSAA when benched (the added-cost table's).
+    const View view = make_view(cameras[0], o.width, o.height);
+    const std::unique_ptr<Technique> noaa = make_technique(o.techniques.front(), o.width, o.height);
+    std::unique_ptr<Technique> msaa;
+    for (const TechniqueOptions& options : o.techniques)
+      if (technique_label(options) == kMsaaBaseline) msaa = make_technique(options, o.width, o.height);
     std::vector<std::pair<std::string, DisplayImage>> crop_images;
-    for (const TechniqueOptions& options : o.techniques) {
+    for (std::size_t index = 0; index < o.techniques.size(); ++index) {
+      const TechniqueOptions& options = o.techniques[index];
       TechniqueResult r;
       r.scene = scene.name;
       r.label = technique_label(options);
       r.options = options;
       if (progress) progress(spec + ": " + r.label, done, total);
-      auto t = make_technique(options, o.width, o.height);
-      const View view = make_view(cameras[0], o.width, o.height);
-      const FrameTiming timing = time_frames(*t, gpu, view, output.get(), o.frames, copy);
-      r.pass_medians = timing.pass_medians;
-      r.frame_ms = timing.frame_ms;
-      r.copy_ms = timing.copy_ms;
-      if (options.technique == "noaa") noaa_ms = r.frame_ms;
-      r.frame_ratio = noaa_ms > 0 ? r.frame_ms / noaa_ms : 1.0;
+      std::unique_ptr<Technique> own;
+      Technique* t = index == 0 ? noaa.get() : r.label == kMsaaBaseline ? msaa.get() : nullptr;
+      if (!t) own = make_technique(options, o.width, o.height), t = own.get();
+      std::vector<Technique*> round = {t};
+      if (t != noaa.get()) round.push_back(noaa.get());
+      if (msaa && t != msaa.get()) round.push_back(msaa.get());
+      const std::vector<FrameTiming> timings = time_rounds(round, gpu, view, output.get(), o.frames, copy);
+      const auto frame_of = [&](const Technique* baseline) {
+        return timings[std::size_t(std::find(round.begin(), round.end(), baseline) - round.begin())].frame_ms;
+      };
+      r.pass_medians = timings[0].pass_medians;
+      r.frame_ms = timings[0].frame_ms;
+      r.copy_ms = timings[0].copy_ms;
+      r.paired_noaa_ms = frame_of(noaa.get());
+      r.paired_msaa_ms = msaa ? frame_of(msaa.get()) : 0.0;
+      r.frame_ratio = r.paired_noaa_ms > 0 ? r.frame_ms / r.paired_noaa_ms : 1.0;
       r.bytes_per_pixel = t->bytes_per_pixel();
+      // Its own frame in the output again: the last round may have ended with a baseline's.
+      t->render(gpu, view, output.get());
+      t->take_pass_times();
 
       std::vector<DisplayImage> frames = {to_display(read_back_image(output.get(), o.width, o.height))};
       // A technique that renders NaN or infinity is broken, not measurable: said, never scored.
@@ -276,6 +309,9 @@ std::string results_json(const BenchOptions& o, const std::vector<TechniqueResul
                               {"passes", passes},
                               {"frame_ms", r.frame_ms},
                               {"frame_ratio_to_noaa", r.frame_ratio},
+                              {"paired_noaa_ms", r.paired_noaa_ms},
+                              {"paired_msaa_4x_ms", r.paired_msaa_ms > 0.0 ? nlohmann::json(r.paired_msaa_ms)
+                                                                            : nlohmann::json(nullptr)},
                               {"copy_ms", r.copy_ms},
                               {"psnr_db", r.psnr_db},
                               {"ssim", r.ssim},
@@ -379,6 +415,10 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
       }
       r.frame_ms = measured(e, "frame_ms", 0.0, kLongestMs, where);
       r.frame_ratio = measured(e, "frame_ratio_to_noaa", 1e-6, 1e6, where);
+      // (absent from files before timing in rounds; the report then uses the baselines' rows)
+      if (e.contains("paired_noaa_ms")) r.paired_noaa_ms = measured(e, "paired_noaa_ms", 0.0, kLongestMs, where);
+      if (e.contains("paired_msaa_4x_ms") && !e.at("paired_msaa_4x_ms").is_null())
+        r.paired_msaa_ms = measured(e, "paired_msaa_4x_ms", 0.0, kLongestMs, where);
       r.copy_ms = e.contains("copy_ms") ? measured(e, "copy_ms", 0.0, kLongestMs, where) : 0.0;
       r.psnr_db = measured(e, "psnr_db", 0.0, kIdenticalDb, where);
       r.ssim = measured(e, "ssim", -1.0, 1.0, where);
@@ -417,7 +457,8 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
   std::ostringstream s;
   char line[512];
   s << o.width << "x" << o.height << ", " << o.lights << (o.lights == 1 ? " light" : " lights")
-    << ", median of " << o.frames << " timed frames after a warm-up, orbit of "
+    << ", median of " << o.frames << " timed frames after a warm-up, in rounds with no AA's frames (and 4x "
+       "MSAA's when benched), x noaa against those; orbit of "
     << o.orbit_frames << " frames; * = on the Pareto front (frame-time ratio down, PSNR up)\n\n";
   s << "| scene | technique | PSNR dB | SSIM | luma err % | orbit PSNR | flicker PSNR | frame ms | x noaa | B/px |\n";
   s << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
@@ -446,13 +487,17 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
     s << line;
   }
   // What RSAA adds to the frame against what hardware 4x MSAA adds, the trade RSAA is for (the
-  // frame over no AA's, medians of one run).
+  // frame over no AA's, medians of one run): from the baselines' frames timed in the RSAA row's own
+  // rounds, or (files from before them) from the baselines' rows.
   std::string added;
   for (const TechniqueResult& r : results) {
     const TechniqueResult* noaa = find(results, r.scene, "noaa");
-    const TechniqueResult* msaa = find(results, r.scene, "msaa 4x");
+    const TechniqueResult* msaa = find(results, r.scene, kMsaaBaseline);
     if (r.options.technique != "rsaa" || !noaa || !msaa) continue;
-    const double rsaa_adds = r.frame_ms - noaa->frame_ms, msaa_adds = msaa->frame_ms - noaa->frame_ms;
+    const bool paired = r.paired_noaa_ms > 0.0 && r.paired_msaa_ms > 0.0;
+    const double noaa_ms = paired ? r.paired_noaa_ms : noaa->frame_ms;
+    const double msaa_ms = paired ? r.paired_msaa_ms : msaa->frame_ms;
+    const double rsaa_adds = r.frame_ms - noaa_ms, msaa_adds = msaa_ms - noaa_ms;
     char multiple[32] = "-";  // 4x MSAA added nothing measurable: no multiple of it
     if (msaa_adds > 0.0) std::snprintf(multiple, sizeof multiple, "%.2fx", rsaa_adds / msaa_adds);
     std::snprintf(line, sizeof line, "| %s | %s | %.1f | %.1f | %s |\n", scene_short_name(r.scene).c_str(),
@@ -461,7 +506,8 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
   }
   if (!added.empty())
     s << "\nAdded cost: each RSAA frame's ms over no AA's, as a multiple of what hardware 4x MSAA adds "
-         "(the same run; - where 4x MSAA added nothing measurable).\n\n| scene | technique | RSAA adds ms | 4x MSAA adds ms | multiple |\n"
+         "(no AA's and 4x MSAA's frames timed in the same rounds as the RSAA row's; - where 4x MSAA added "
+         "nothing measurable).\n\n| scene | technique | RSAA adds ms | 4x MSAA adds ms | multiple |\n"
          "| --- | --- | --- | --- | --- |\n"
       << added;
   s << "\nPer scene: the paper's trades (it reports about +4 dB for 8 over 4 samples and up to +3 dB "

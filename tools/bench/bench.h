@@ -33,7 +33,10 @@ struct TechniqueResult {
   TechniqueOptions options;
   std::vector<PassTime> pass_medians;  // median over the timed frames, per pass
   double frame_ms = 0.0;               // median of the frames' summed wall-clock pass times
-  double frame_ratio = 0.0;            // frame_ms / noaa frame_ms of the same scene
+  // The baselines' frames timed in the same rounds as this technique's (time_rounds()): no AA's,
+  // and 4x MSAA's when the run benches it (else 0; 0 in files from before they existed).
+  double paired_noaa_ms = 0.0, paired_msaa_ms = 0.0;
+  double frame_ratio = 0.0;            // frame_ms / paired_noaa_ms (files before it: / the noaa row's)
   // The speed of light: median wall time of a full-screen copy pass (copy_pass.h) timed after
   // each of this technique's timed frames, at the same size; 0 in files from before it existed.
   double copy_ms = 0.0;
@@ -58,9 +61,13 @@ struct FrameTiming {
   double frame_ms = 0.0;               // median of the frames' summed wall-clock pass times
   double copy_ms = 0.0;                // median of the copy pass timed after each frame
 };
-// One warm-up frame, then `frames` timed frames of `technique`, each followed by `copy`.
-FrameTiming time_frames(Technique& technique, const GpuScene& scene, const View& view, GLuint output,
-                        int frames, CopyPass& copy);
+// One warm-up frame of each technique, then `frames` rounds: in each, every technique renders one
+// frame followed by `copy`, the order rotated by one a round (none always runs after the same
+// one). Techniques timed in one call see the same load on a shared machine, so their ratios are
+// far steadier than those of techniques timed one after another (README, *Timing in rounds*).
+// One timing per technique, in order.
+std::vector<FrameTiming> time_rounds(const std::vector<Technique*>& techniques, const GpuScene& scene,
+                                     const View& view, GLuint output, int frames, CopyPass& copy);
 
 // Needs a current GL context.
 std::vector<TechniqueResult> run_bench(const BenchOptions& options, const Progress& progress);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -107,33 +108,60 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
       int(o.techniques.size() * (o.sizes.size() + o.subdivision_levels.size() + o.light_counts.size()));
   int done = 0;
 
-  // One (size, scene) point for every technique: the techniques of one point are measured
-  // together, so that a change of load on the shared machine shifts a point, not a technique.
+  // One (size, scene) point for every technique: the techniques of one point are timed in
+  // rounds (time_rounds(): every technique one frame a round), so that a change of load on the
+  // shared machine shifts a point, not a technique. At most kRoundSize techniques are made at
+  // once (their buffers at 2560x1440: about 2 GB for the README's six); with more, the rest are
+  // timed in further groups, each with no AA and 4x MSAA (the baselines, when measured) again.
+  constexpr std::size_t kRoundSize = 6;
+  std::vector<std::size_t> baselines, others;
+  for (std::size_t i = 0; i < o.techniques.size(); ++i) {
+    const std::string label = technique_label(o.techniques[i]);
+    (label == "noaa" || label == "msaa 4x" ? baselines : others).push_back(i);
+  }
   const auto measure = [&](const Scene& s, int w, int h, GrowthAxis axis, int lights) {
     const GpuScene gpu(s);
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, w, h);
     CopyPass copy(w, h);
     copy.time_ms(output.get());  // warm-up
     const View view = make_view(camera, w, h);
-    for (const TechniqueOptions& options : o.techniques) {
-      GrowthPoint p;
-      p.label = technique_label(options);
-      p.options = options;
-      p.axis = axis;
-      p.width = w, p.height = h;
-      p.triangles = s.triangle_count();
-      p.lights = lights;
+    std::vector<GrowthPoint> points(o.techniques.size());
+    const auto time_group = [&](const std::vector<std::size_t>& group, bool keep_baselines) {
       if (progress)
         progress(std::string(to_string(axis)) + ": " + std::to_string(w) + "x" + std::to_string(h) + ", " +
-                     std::to_string(p.triangles) + " triangles, " + std::to_string(lights) + " lights: " + p.label,
+                     std::to_string(s.triangle_count()) + " triangles, " + std::to_string(lights) + " lights: " +
+                     std::to_string(group.size()) + " techniques in rounds",
                  done, total);
-      auto t = make_technique(options, w, h);
-      const FrameTiming timing = time_frames(*t, gpu, view, output.get(), o.frames, copy);
-      p.frame_ms = timing.frame_ms;
-      p.copy_ms = timing.copy_ms;
-      results.points.push_back(p);
-      ++done;
+      std::vector<std::unique_ptr<Technique>> techniques;
+      std::vector<Technique*> round;
+      for (std::size_t i : group) {
+        techniques.push_back(make_technique(o.techniques[i], w, h));
+        round.push_back(techniques.back().get());
+      }
+      const std::vector<FrameTiming> timings = time_rounds(round, gpu, view, output.get(), o.frames, copy);
+      for (std::size_t k = 0; k < group.size(); ++k) {
+        const std::size_t i = group[k];
+        const bool baseline = std::find(baselines.begin(), baselines.end(), i) != baselines.end();
+        if (baseline && !keep_baselines) continue;
+        GrowthPoint& p = points[i];
+        p.label = technique_label(o.techniques[i]);
+        p.options = o.techniques[i];
+        p.axis = axis;
+        p.width = w, p.height = h;
+        p.triangles = s.triangle_count();
+        p.lights = lights;
+        p.frame_ms = timings[k].frame_ms;
+        p.copy_ms = timings[k].copy_ms;
+        ++done;
+      }
+    };
+    const std::size_t per_group = kRoundSize - std::min(baselines.size(), kRoundSize - 1);
+    for (std::size_t first = 0; first < std::max<std::size_t>(others.size(), 1); first += per_group) {
+      std::vector<std::size_t> group = baselines;
+      for (std::size_t k = first; k < std::min(others.size(), first + per_group); ++k) group.push_back(others[k]);
+      time_group(group, first == 0);
     }
+    results.points.insert(results.points.end(), points.begin(), points.end());
   };
   for (const auto& [w, h] : o.sizes) measure(scene, w, h, GrowthAxis::Pixels, 1);
   for (int level : o.subdivision_levels)
