@@ -351,7 +351,9 @@ class RsaaPass {
   // is not the last pre-pass's: there are no codes to resolve it with. `output` may be the
   // frame's colour itself (resolved in place, post "compute" only), but not another texture that
   // shares its storage (a glTextureView of it): GL cannot tell, and the pass would read pixels it
-  // has already written.
+  // has already written. The normal, primitive and depth textures must hold what the pre-pass
+  // read until resolve() returns: a pre-pass that writes records lists the edge pixels from them
+  // (the pass checks the names, not the contents).
   void resolve(const RsaaFrame& frame, GlName output, GlName mask_output = 0);
 
   const SamplePattern& pattern() const { return pattern_; }

@@ -65,10 +65,16 @@ TEST(Bench, ReportsRsaasAddedCostAsAMultipleOfMsaas) {
   EXPECT_EQ(added.find("| b |"), std::string::npos) << added;  // no baselines in scene b
   // 4x MSAA measured no dearer than no AA (noise at tiny sizes): the row stays, without a multiple.
   EXPECT_NE(added.find("| c | rsaa 8x | 2.0 | -1.0 | - |"), std::string::npos) << added;
+  // Rows without paired baselines (a file from before timing in rounds) say where the numbers come from.
+  EXPECT_NE(added.find("from the noaa and msaa 4x rows"), std::string::npos) << added;
+  EXPECT_NE(report.find("one technique after another"), std::string::npos) << report;
   // The baselines' frames timed in the RSAA row's own rounds decide where a run has them.
   r[2].paired_noaa_ms = 20.0, r[2].paired_msaa_ms = 60.0;
+  r[6].paired_noaa_ms = 10.0, r[6].paired_msaa_ms = 9.0;
   const std::string paired = bench::results_markdown(bench::BenchOptions{}, r);
   EXPECT_NE(paired.find("| a | rsaa 8x | 30.0 | 40.0 | 0.75x |"), std::string::npos) << paired;
+  EXPECT_NE(paired.find("timed in the same rounds as the RSAA row's"), std::string::npos) << paired;
+  EXPECT_NE(paired.find("in rounds with no AA's frames"), std::string::npos) << paired;
 }
 
 // A technique for the timing rounds: renders nothing, logs its name, times one pass.

@@ -111,14 +111,29 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
   // One (size, scene) point for every technique: the techniques of one point are timed in
   // rounds (time_rounds(): every technique one frame a round), so that a change of load on the
   // shared machine shifts a point, not a technique. At most kRoundSize techniques are made at
-  // once (their buffers at 2560x1440: about 2 GB for the README's six); with more, the rest are
-  // timed in further groups, each with no AA and 4x MSAA (the baselines, when measured) again.
+  // once (their buffers at 2560x1440: about 2 GB for six); the first group holds the baselines
+  // (no AA, 4x MSAA) and the techniques light_crossings() compares with them (RSAA 8x and 4x with
+  // the defaults, the --table rows, 8x SSAA), so that those comparisons are paired; further
+  // groups, timed after, hold the rest.
   constexpr std::size_t kRoundSize = 6;
-  std::vector<std::size_t> baselines, others;
+  const std::string rsaa8 = technique_label(technique_options("rsaa", 8));
+  const std::string rsaa4 = technique_label(technique_options("rsaa", 4));
+  std::vector<std::size_t> first_group, rest;
   for (std::size_t i = 0; i < o.techniques.size(); ++i) {
     const std::string label = technique_label(o.techniques[i]);
-    (label == "noaa" || label == "msaa 4x" ? baselines : others).push_back(i);
+    if (label == "noaa" || label == "msaa 4x") first_group.push_back(i);
   }
+  for (int compared = 1; compared >= 0; --compared)
+    for (std::size_t i = 0; i < o.techniques.size(); ++i) {
+      const std::string label = technique_label(o.techniques[i]);
+      if (label == "noaa" || label == "msaa 4x") continue;
+      const bool is_compared = label == rsaa8 || label == rsaa4 || label == "ssaa 8x" || label.rfind("rsaa table ", 0) == 0;
+      if (is_compared != bool(compared)) continue;
+      (first_group.size() < kRoundSize ? first_group : rest).push_back(i);
+    }
+  std::vector<std::vector<std::size_t>> groups = {first_group};
+  for (std::size_t k = 0; k < rest.size(); k += kRoundSize)
+    groups.emplace_back(rest.begin() + std::ptrdiff_t(k), rest.begin() + std::ptrdiff_t(std::min(rest.size(), k + kRoundSize)));
   const auto measure = [&](const Scene& s, int w, int h, GrowthAxis axis, int lights) {
     const GpuScene gpu(s);
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, w, h);
@@ -126,7 +141,8 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
     copy.time_ms(output.get());  // warm-up
     const View view = make_view(camera, w, h);
     std::vector<GrowthPoint> points(o.techniques.size());
-    const auto time_group = [&](const std::vector<std::size_t>& group, bool keep_baselines) {
+    for (const std::vector<std::size_t>& group : groups) {
+      if (group.empty()) continue;
       if (progress)
         progress(std::string(to_string(axis)) + ": " + std::to_string(w) + "x" + std::to_string(h) + ", " +
                      std::to_string(s.triangle_count()) + " triangles, " + std::to_string(lights) + " lights: " +
@@ -141,8 +157,6 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
       const std::vector<FrameTiming> timings = time_rounds(round, gpu, view, output.get(), o.frames, copy);
       for (std::size_t k = 0; k < group.size(); ++k) {
         const std::size_t i = group[k];
-        const bool baseline = std::find(baselines.begin(), baselines.end(), i) != baselines.end();
-        if (baseline && !keep_baselines) continue;
         GrowthPoint& p = points[i];
         p.label = technique_label(o.techniques[i]);
         p.options = o.techniques[i];
@@ -154,12 +168,6 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
         p.copy_ms = timings[k].copy_ms;
         ++done;
       }
-    };
-    const std::size_t per_group = kRoundSize - std::min(baselines.size(), kRoundSize - 1);
-    for (std::size_t first = 0; first < std::max<std::size_t>(others.size(), 1); first += per_group) {
-      std::vector<std::size_t> group = baselines;
-      for (std::size_t k = first; k < std::min(others.size(), first + per_group); ++k) group.push_back(others[k]);
-      time_group(group, first == 0);
     }
     results.points.insert(results.points.end(), points.begin(), points.end());
   };
