@@ -37,6 +37,22 @@ double least_squares_slope(const std::vector<double>& x, const std::vector<doubl
   return d > 0 ? (n * sxy - sx * sy) / d : 0.0;
 }
 
+const char* const kMsaaLabel = "msaa 4x";
+
+// The pairs light_crossings() compares (cheaper, than), of the techniques among `labels`: RSAA 8x
+// with the defaults against 4x MSAA and 8x SSAA, RSAA 4x against 4x MSAA, and every --table row
+// (a union or cell pattern: 8 subsamples from 4x draws) against 4x MSAA.
+std::vector<std::pair<std::string, std::string>> crossing_pairs(const std::vector<std::string>& labels) {
+  const std::string rsaa8 = technique_label(technique_options("rsaa", 8));
+  const std::string rsaa4 = technique_label(technique_options("rsaa", 4));
+  std::vector<std::pair<std::string, std::string>> pairs = {{rsaa8, kMsaaLabel}, {rsaa8, "ssaa 8x"}, {rsaa4, kMsaaLabel}};
+  for (const std::string& label : labels)
+    if (label.rfind("rsaa table ", 0) == 0 &&
+        std::find(pairs.begin(), pairs.end(), std::make_pair(label, std::string(kMsaaLabel))) == pairs.end())
+      pairs.emplace_back(label, kMsaaLabel);
+  return pairs;
+}
+
 }  // namespace
 
 Scene subdivide(const Scene& scene, int levels) {
@@ -112,25 +128,22 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
   // rounds (time_rounds(): every technique one frame a round), so that a change of load on the
   // shared machine shifts a point, not a technique. At most kRoundSize techniques are made at
   // once (their buffers at 2560x1440: about 2 GB for six); the first group holds the baselines
-  // (no AA, 4x MSAA) and the techniques light_crossings() compares with them (RSAA 8x and 4x with
-  // the defaults, the --table rows, 8x SSAA), so that those comparisons are paired; further
-  // groups, timed after, hold the rest.
+  // (no AA, 4x MSAA) and the techniques light_crossings() compares (crossing_pairs()), so that
+  // those comparisons are paired; further groups, timed after, hold the rest.
   constexpr std::size_t kRoundSize = 6;
-  const std::string rsaa8 = technique_label(technique_options("rsaa", 8));
-  const std::string rsaa4 = technique_label(technique_options("rsaa", 4));
+  std::vector<std::string> labels;
+  for (const TechniqueOptions& t : o.techniques) labels.push_back(technique_label(t));
+  std::vector<std::string> compared = {"noaa", kMsaaLabel};  // in this order of priority
+  for (const auto& [a, b] : crossing_pairs(labels))
+    for (const std::string& label : {a, b})
+      if (std::find(compared.begin(), compared.end(), label) == compared.end()) compared.push_back(label);
   std::vector<std::size_t> first_group, rest;
-  for (std::size_t i = 0; i < o.techniques.size(); ++i) {
-    const std::string label = technique_label(o.techniques[i]);
-    if (label == "noaa" || label == "msaa 4x") first_group.push_back(i);
-  }
-  for (int compared = 1; compared >= 0; --compared)
-    for (std::size_t i = 0; i < o.techniques.size(); ++i) {
-      const std::string label = technique_label(o.techniques[i]);
-      if (label == "noaa" || label == "msaa 4x") continue;
-      const bool is_compared = label == rsaa8 || label == rsaa4 || label == "ssaa 8x" || label.rfind("rsaa table ", 0) == 0;
-      if (is_compared != bool(compared)) continue;
+  for (const std::string& label : compared)
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (labels[i] == label && first_group.size() < kRoundSize) first_group.push_back(i);
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (std::find(first_group.begin(), first_group.end(), i) == first_group.end())
       (first_group.size() < kRoundSize ? first_group : rest).push_back(i);
-    }
   std::vector<std::vector<std::size_t>> groups = {first_group};
   for (std::size_t k = 0; k < rest.size(); k += kRoundSize)
     groups.emplace_back(rest.begin() + std::ptrdiff_t(k), rest.begin() + std::ptrdiff_t(std::min(rest.size(), k + kRoundSize)));
@@ -239,20 +252,15 @@ LightCrossing light_crossing(const GrowthResults& results, const std::string& a,
 }
 
 std::vector<LightCrossing> light_crossings(const GrowthResults& results) {
-  const std::string rsaa8 = technique_label(technique_options("rsaa", 8));
-  const std::string rsaa4 = technique_label(technique_options("rsaa", 4));
   const auto measured = [&](const std::string& label) {
     return std::any_of(results.points.begin(), results.points.end(),
                        [&](const GrowthPoint& p) { return p.axis == GrowthAxis::Lights && p.label == label; });
   };
-  std::vector<std::pair<std::string, std::string>> pairs = {{rsaa8, "msaa 4x"}, {rsaa8, "ssaa 8x"}, {rsaa4, "msaa 4x"}};
-  // The --table row (a union or cell pattern: 8 subsamples from 4x draws) against 4x MSAA too.
+  std::vector<std::string> labels;
   for (const GrowthPoint& p : results.points)
-    if (p.axis == GrowthAxis::Lights && p.label.rfind("rsaa table ", 0) == 0 &&
-        std::find(pairs.begin(), pairs.end(), std::make_pair(p.label, std::string("msaa 4x"))) == pairs.end())
-      pairs.emplace_back(p.label, "msaa 4x");
+    if (p.axis == GrowthAxis::Lights) labels.push_back(p.label);
   std::vector<LightCrossing> out;
-  for (const auto& [a, b] : pairs)
+  for (const auto& [a, b] : crossing_pairs(labels))
     if (measured(a) && measured(b)) out.push_back(light_crossing(results, a, b));
   return out;
 }
