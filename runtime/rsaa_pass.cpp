@@ -597,6 +597,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   cull_ = settings.prepass_cull == "neighbours";
   if (cull_ && (settings.prepass == "msaa" || settings.prepass == "records"))
     throw std::invalid_argument("RSAA prepass_cull neighbours needs the jittered pre-pass, not '" + settings.prepass + "'");
+  if (settings.facet_materials && !settings.material_edges)
+    throw std::invalid_argument("RSAA facet_materials needs material_edges: facets differ by their materials");
   layered_ = settings.prepass == "records";
   // "auto": the multisample pre-pass where the driver samples the pattern (and its pixel list can
   // address the image), else the jittered draws writing records where these fit the budget, else
@@ -675,7 +677,8 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   gl_->subsample_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("scene.vert")},
                                              {GL_GEOMETRY_SHADER, gl::shader_source("scene.geom")},
                                              {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
-                                            defines, "RSAA pre-pass");
+                                            defines + (settings.facet_materials ? "#define SCENE_FACET_MATERIALS\n" : ""),
+                                            "RSAA pre-pass");
   if (cull_)
     gl_->cull_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
                                           {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_prepass_cull.frag")}},

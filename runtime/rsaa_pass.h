@@ -84,14 +84,16 @@
 //   vertex attributes  0 position (vec3, world space: the pre-pass applies no model matrix,
 //                      so instanced, skinned or morphed geometry is baked into a buffer first;
 //                      engines with such geometry use the way above), 1 normal, 2 uv, 3 albedo
-//                      (only 0 matters to the pre-pass; the others may stay disabled)
+//                      (only 0 matters to the pre-pass, and 1 with facet_materials; the
+//                      others may stay disabled)
 //   u_view, u_projection (mat4)   the frame's camera, unjittered
 //   u_jitter_ndc (vec2)           = jitter_ndc: the image translation that puts this subsample
 //                                   on the pixel centre
 //   u_primitive_base (uint)       first primitive id of this draw call as written into
 //                                 centre_primitive (0 for one draw per frame; default 0)
 //   u_material (uint)             with material_edges: the draw's material as written into
-//                                 centre_primitive's second channel (default 0)
+//                                 centre_primitive's second channel (default 0; with
+//                                 facet_materials, flat-shaded triangles write their facet's)
 //
 // The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling,
 // logic op and rasterizer discard off, filled polygons, colour mask: the subsample's channel
@@ -188,6 +190,14 @@ struct RsaaSettings {
   // renderer (`rsaa render`), whose scenes carry materials (one id per appearance), turns it on
   // by default (no scene measured loses, README "Material edges").
   bool material_edges = false;
+  // Ours, with material_edges: the pass's own pre-pass program (render_subsamples) gives each
+  // flat-shaded triangle (its three vertex normals agree) a material made from its shading
+  // normal instead of u_material (shaders/scene_facet_material.glsl), so that the facets of a
+  // flat-shaded mesh, which the geometric similarity calls one surface where they meet at a
+  // gentle angle, differ as their shading does. The G-buffer must write the same materials
+  // (SceneRenderer with facet_materials does; an engine drawing its own pre-pass gives its
+  // facets materials itself). Off by default (README, *Facet edges*).
+  bool facet_materials = false;
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver), each
   // fragment computing its subsample's code; "msaa" draws once into multisample targets, the

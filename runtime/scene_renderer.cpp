@@ -17,9 +17,10 @@ gl::Program make_scene_program(const std::string& defines, const std::string& la
 
 }  // namespace
 
-SceneRenderer::SceneRenderer()
+SceneRenderer::SceneRenderer(bool facet_materials)
     : shade_(make_scene_program("", "scene shading")),
-      gbuffer_(make_scene_program("#define RSAA_GBUFFER\n#define RSAA_SAMPLE_COUNT 1\n",
+      gbuffer_(make_scene_program(std::string("#define RSAA_GBUFFER\n#define RSAA_SAMPLE_COUNT 1\n") +
+                                      (facet_materials ? "#define SCENE_FACET_MATERIALS\n" : ""),
                                   "scene shading + G-buffer")) {}
 
 void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program,

@@ -14,7 +14,9 @@ namespace rsaa {
 
 class SceneRenderer {
  public:
-  SceneRenderer();
+  // facet_materials: the G-buffer program writes flat-shaded triangles' facet materials
+  // (RsaaSettings::facet_materials, shaders/scene_facet_material.glsl) instead of their draw's.
+  explicit SceneRenderer(bool facet_materials = false);
 
   // Sets the frame uniforms on `program` and draws the scene with the image translated by
   // `jitter_ndc` (see jitter_ndc_for_sample), depth-tested with `depth_func` (GL_GREATER for

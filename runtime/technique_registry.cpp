@@ -41,6 +41,7 @@ std::vector<TechniqueOptions> rsaa_variants() {
         o.split_check = "off";
         o.fetch_check = "off";
         o.material_edges = "off";
+        o.facet_edges = "off";
         list.push_back(o);
       }
   return list;
@@ -58,6 +59,7 @@ TechniqueOptions rsaa_default_without_extensions() {
   o.split_check = "off";
   o.fetch_check = "off";
   o.material_edges = "off";
+  o.facet_edges = "off";
   return o;
 }
 

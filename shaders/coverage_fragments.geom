@@ -9,6 +9,7 @@
 // Triangles that reach behind the eye (w <= 0) are drawn as they are and flagged: the fragment
 // stage then gives a fragment covering the pixel centre every sample (no-AA behaviour at the near
 // plane) and the rasteriser's depth plane.
+#include "scene_facet_material.glsl"
 #include "scene_normal_side.glsl"
 
 layout(triangles) in;
@@ -32,6 +33,7 @@ out FragmentData {
   float filter_alpha;
   flat vec3 face_normal;
   flat float normal_side;  // scene_normal_side.glsl
+  flat uint material;      // scene_facet_material.glsl
 } g_out;
 
 out CoverageTriangle {
@@ -115,6 +117,7 @@ void main() {
     g_out.filter_alpha = m.x * v_in[0].filter_alpha + m.y * v_in[1].filter_alpha + m.z * v_in[2].filter_alpha;
     g_out.face_normal = face;
     g_out.normal_side = side;
+    g_out.material = u_material;
     EmitVertex();
   }
   EndPrimitive();

@@ -13,17 +13,17 @@ in FragmentData {
   float filter_alpha;
   flat vec3 face_normal;
   flat float normal_side;  // scene_normal_side.glsl
+  flat uint material;      // scene_facet_material.glsl
 } f_in;
 
 uniform uint u_primitive_base;  // first primitive id of this draw in the centre primitive target
-uniform uint u_material;        // this draw's material, as the G-buffer pass wrote it
 
 layout(location = 0) out uvec4 o_code;
 
 void main() {
   uint primitive = u_primitive_base + uint(gl_PrimitiveID) + 1u;
 #ifdef RSAA_MATERIAL_EDGES
-  o_code = rsaa_prepass_code(f_in.view_position, f_in.face_normal, primitive, u_material);
+  o_code = rsaa_prepass_code(f_in.view_position, f_in.face_normal, primitive, f_in.material);
 #else
   o_code = rsaa_prepass_code(f_in.view_position, f_in.face_normal, primitive);
 #endif

@@ -1,5 +1,6 @@
 // The paper's preGS: the geometric normal of each triangle, computed here so that no
 // application data is needed; passes the primitive id on for the fully-covered shortcut.
+#include "scene_facet_material.glsl"
 #include "scene_normal_side.glsl"
 
 layout(triangles) in;
@@ -21,6 +22,7 @@ out FragmentData {
   float filter_alpha;
   flat vec3 face_normal;
   flat float normal_side;  // scene_normal_side.glsl
+  flat uint material;      // scene_facet_material.glsl
 } g_out;
 
 void main() {
@@ -32,6 +34,7 @@ void main() {
   vec3 face = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
   float side = scene_normal_side(face, v_in[0].view_normal + v_in[1].view_normal + v_in[2].view_normal,
                                  v_in[0].view_position);
+  uint material = scene_facet_material(v_in[0].view_normal, v_in[1].view_normal, v_in[2].view_normal);
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
     gl_PrimitiveID = gl_PrimitiveIDIn;
@@ -42,6 +45,7 @@ void main() {
     g_out.filter_alpha = v_in[i].filter_alpha;
     g_out.face_normal = face;
     g_out.normal_side = side;
+    g_out.material = material;
     EmitVertex();
   }
   EndPrimitive();

@@ -14,13 +14,13 @@ in FragmentData {
   float filter_alpha;
   flat vec3 face_normal;
   flat float normal_side;  // scene_normal_side.glsl
+  flat uint material;      // scene_facet_material.glsl
 } f_in;
 
 uniform sampler2D u_texture;
 uniform bool u_has_texture;
 uniform float u_texture_anisotropy = 1.0;  // Scene::texture_anisotropy, 1..16
 uniform uint u_primitive_base;
-uniform uint u_material;  // the draw's material (Scene::draws), for RSAA's material edges
 
 // The interpolated shading normal, unit, on the side of the triangle the eye sees (two-sided
 // shading, scene_normal_side.glsl); where a model's normals are broken, the face's, towards the eye.

@@ -85,6 +85,9 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
            {"--technique dyncov --rules evict", "--rules must be seed or surface"},
            {"--technique rsaa --code-bits 12", "--code-bits"},
            {"--technique rsaa --material-edges yes", "--material-edges must be off or on, not 'yes'"},
+           {"--technique rsaa --facet-edges yes", "--facet-edges must be off or on, not 'yes'"},
+           {"--technique rsaa --facet-edges on --material-edges off", "--facet-edges on needs --material-edges on"},
+           {"--technique msaa --facet-edges on", "--facet-edges is an option of rsaa, not of msaa"},
            // Given, never ignored: an option of another technique, an empty value, a camera with a
            // trailing comma or in hexadecimal (each once taken without a word).
            {"--technique noaa --similarity bogus", "--similarity is an option of rsaa, not of noaa"},

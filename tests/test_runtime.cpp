@@ -637,6 +637,55 @@ TEST_F(Runtime, TheSplitCheckByDefaultHelpsTheGrazingScene) {
   EXPECT_GT(with_check, no_check + 0.1);
 }
 
+// Facet edges (ours, an option): a flat-shaded mesh draws a colour edge at every facet crease, which
+// the geometric similarity calls one surface where facets meet at a gentle angle (a faceted sphere).
+// With facet materials the pass's pre-pass program and the G-buffer give each facet a material of
+// its own, so subsamples on a neighbouring facet are dissimilar and the creases are resampled.
+TEST_F(Runtime, FacetEdgesResolveTheCreasesOfAFlatShadedMesh) {
+  const std::string sphere = "/usr/share/assimp/models/STL/sphereWithHole.stl";
+  RsaaSettings plain = rsaa_settings(technique_options("rsaa", 8));
+  ASSERT_FALSE(plain.facet_materials);
+  RsaaSettings facets = plain;
+  facets.facet_materials = true;
+  const Image reference = render(sphere, technique_options("ssaa", 64));
+  const RsaaRun with = rsaa_run(sphere, facets), without = rsaa_run(sphere, plain);
+  std::size_t changed = 0, all_similar_before = 0;
+  for (std::size_t p = 0; p < with.masks.size(); ++p) {
+    changed += with.masks[p] != without.masks[p];
+    all_similar_before += with.masks[p] != without.masks[p] && without.masks[p] == 0xffu;
+  }
+  const double with_db = psnr(with.image, reference), without_db = psnr(without.image, reference);
+  std::printf("sphereWithHole 160x120: facet edges %.2f dB (%zu masks changed, %zu were all-similar), off %.2f dB\n",
+              with_db, changed, all_similar_before, without_db);
+  EXPECT_GT(all_similar_before, 20u);  // creases the geometry called one surface
+  EXPECT_GT(with_db, without_db + 1.0);
+}
+
+// A smooth-shaded model has no flat-shaded triangle: facet materials leave its G-buffer, masks and
+// image exactly as they were; a material edge between coplanar parts stays one (the facet
+// material hashes the draw's material in).
+TEST_F(Runtime, FacetEdgesLeaveSmoothShadingAndMaterialEdgesAlone) {
+  RsaaSettings plain = rsaa_settings(technique_options("rsaa", 8));
+  RsaaSettings facets = plain;
+  facets.facet_materials = true;
+  const std::string duck = "/usr/share/assimp/models/Collada/duck.dae";
+  const RsaaRun smooth_with = rsaa_run(duck, facets), smooth_without = rsaa_run(duck, plain);
+  EXPECT_EQ(smooth_with.masks, smooth_without.masks);
+  std::size_t differing = 0;
+  for (std::size_t p = 0; p < smooth_with.image.pixels.size(); ++p)
+    differing += squared_error(smooth_with.image.pixels[p], smooth_without.image.pixels[p]) != 0.0;
+  EXPECT_EQ(differing, 0u);
+  const Image reference = render("builtin:coplanar", technique_options("ssaa", 64));
+  const RsaaRun coplanar_with = rsaa_run("builtin:coplanar", facets);
+  const RsaaRun coplanar_without = rsaa_run("builtin:coplanar", plain);
+  const double with_db = psnr(coplanar_with.image, reference), without_db = psnr(coplanar_without.image, reference);
+  std::printf("coplanar 160x120: facet edges %.2f dB, off %.2f dB\n", with_db, without_db);
+  EXPECT_GT(with_db, without_db - 0.05);
+  RsaaSettings no_materials = facets;
+  no_materials.material_edges = false;
+  EXPECT_THROW(make_rsaa(no_materials, 32, 24), std::invalid_argument);
+}
+
 // The fetch check is a default: an edge pixel none of whose dissimilar subsamples finds a like
 // surface in its outside pixel fetches with half the offset (the neighbours do not show what the
 // subsamples saw: thin side faces, contour lines). It keeps every mask, changes only edge pixels

@@ -73,6 +73,11 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "rsaa (ours): off (subsamples compare geometry only, the paper) | on (a subsample on another "
                   "material than the centre's is dissimilar: colour edges between coplanar parts)")
       ->capture_default_str();
+  cmd->add_option("--facet-edges", o.facet_edges,
+                  "rsaa (ours, needs --material-edges on): off | on (a flat-shaded triangle's material is made from "
+                  "its shading normal, so a subsample on another facet of a flat-shaded mesh is dissimilar: the "
+                  "shading creases the geometry calls one surface)")
+      ->capture_default_str();
   cmd->add_option("--post", o.post,
                   "rsaa post-process: compute (a compute shader lists the pixels to resolve, the resolve runs "
                   "on the list) | edges (an edge pass marks them in a depth target, the resolve runs behind "
@@ -117,7 +122,7 @@ inline void refuse_options_of_other_techniques(const CLI::App& cmd, const std::s
       {"--similarity", {"rsaa"}},      {"--auth", {"rsaa"}},         {"--threshold", {"rsaa"}},
       {"--prepass", {"rsaa"}},         {"--prepass-cull", {"rsaa"}}, {"--split-cap", {"rsaa"}},
       {"--multi-surface", {"rsaa"}},   {"--split-check", {"rsaa"}},  {"--fetch-check", {"rsaa"}},
-      {"--material-edges", {"rsaa"}},  {"--post", {"rsaa"}},         {"--code-bits", {"rsaa"}},
+      {"--material-edges", {"rsaa"}},  {"--facet-edges", {"rsaa"}},  {"--post", {"rsaa"}},         {"--code-bits", {"rsaa"}},
       {"--kernel", {"ssaa-filtered"}}, {"--agaa-k", {"agaa"}},       {"--agaa-diffuse", {"agaa"}},
       {"--agaa-aggregates", {"agaa"}}, {"--agaa-k-pixels", {"agaa"}}, {"--z-prepass", {"dcaa", "dyncov"}},
       {"--shade", {"dcaa", "dyncov"}}, {"--rules", {"dcaa", "dyncov"}}};
