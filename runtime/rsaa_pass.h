@@ -191,7 +191,7 @@ struct RsaaSettings {
   // by default (no scene measured loses, README "Material edges").
   bool material_edges = false;
   // Ours, with material_edges: the pass's own pre-pass program (render_subsamples) gives each
-  // flat-shaded triangle (its three vertex normals agree) a material made from its shading
+  // flat-shaded triangle (its three vertex normals are equal) a material made from its shading
   // normal instead of u_material (shaders/scene_facet_material.glsl), so that the facets of a
   // flat-shaded mesh, which the geometric similarity calls one surface where they meet at a
   // gentle angle, differ as their shading does. The G-buffer must write the same materials

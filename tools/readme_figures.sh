@@ -15,7 +15,7 @@
 #   --only coverage: just the coverage family's goals and scale tests (about 30 minutes).
 #   --only goals: just RSAA's goals (issue 11) on the bench scenes and held-out models, facet
 #            edges on them and on 53 surveyed models (about 40 minutes: the last two steps took
-#            768 and 964 s in session 24).
+#            786 and 1014 s in session 24).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -70,8 +70,8 @@ survey_models=($models/3DS/test1.3ds $models/AC/Wuson.ac $models/AC/sample_subdi
   $models/X3D/HelloX3dTrademark.x3d $models/XGL/BCN_Epileptic.zgl $models/XGL/Spider_ascii.zgl
   $models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf $models/glTF2/simple_skin/simple_skin.gltf
   $models/glTF2/textureTransform/TextureTransformTest.gltf)
-# Held-out models surveyed in session 24 where RSAA 8x lost to 4x MSAA or facet edges change the
-# most (flat-shaded meshes among them): the facet-edges step.
+# Held-out models surveyed in session 24 where RSAA 8x lost to 4x MSAA by more than 0.1 dB, or where
+# facet edges change the most (flat-shaded meshes among them): the facet-edges step.
 facet_models=($models/FBX/animation_with_skeleton.fbx $models/STL/sphereWithHole.stl
   $models/LWO/LWO2/MappingModes/earth_uv_cylindrical_y.lwo $models/STL/Spider_binary.stl $models/X/Testwuson.X
   $models/DXF/issue_2229.dxf $models/LWO/LXOB_Modo/CrazyEngine.lxo $models/3DS/test1.3ds $models/Collada/regr01.dae
@@ -223,6 +223,8 @@ goals_steps() {
     $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
     $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
     $models/IQM/mrfixit.iqm "${facet_models[@]}" >"$out/facet-edges.md"
+  bash tools/crops.sh "$out/facet-edges/sphereWithHole" 100x75+330+250 docs/images/facet_crops.png \
+    noaa rsaasamples8 rsaasamples8-with msaasamples4 reference
   step "RSAA's goals on 53 surveyed held-out models (defaults -> --facet-edges on)" rsaa-goals-survey.md
   bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-survey" --with "--facet-edges on" "${survey_models[@]}" \
     >"$out/rsaa-goals-survey.md"

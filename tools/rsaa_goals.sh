@@ -34,9 +34,13 @@ rows=() summary=()
 declare -A used=()
 for scene in "$@"; do
   name=$(basename "${scene#builtin:}"); name=${name%.*}
-  # Files of one base name (spider.fbx, spider.mdc) keep their rows and images apart.
+  # Files of one base name (spider.fbx, spider.mdc) keep their rows and images apart; a name is
+  # one word (the summary's fields are split on blanks).
   [[ -z ${used[$name]:-} ]] || name=$(basename "$scene")
   [[ -z ${used[$name]:-} ]] || name=$(basename "$(dirname "$scene")")_$(basename "$scene")
+  name=${name//[[:space:]]/_}
+  base=$name
+  for ((k = 2; ${used[$name]:-0} == 1; ++k)); do name=${base}_$k; done
   used[$name]=1
   dir=$out/$name
   mkdir -p "$dir"
