@@ -1,12 +1,14 @@
 #include "runtime/gpu_scene.h"
 
 #include <cstddef>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
 #include "runtime/coplanar_draws.h"
 #include "runtime/gl_context.h"
+#include "runtime/smoothing_groups.h"
 
 namespace rsaa {
 
@@ -78,6 +80,24 @@ GpuScene::GpuScene(const Scene& scene)
   glCreateBuffers(1, &id);
   point_lights_ = gl::Buffer(id);
   glNamedBufferStorage(id, GLsizeiptr(block.size() * sizeof(float)), block.data(), 0);
+
+  std::vector<std::uint8_t> facets = facet_colours(scene);
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  // A buffer texture larger than the driver's limit reads as zeros: then no triangle is a facet
+  // (facet edges off for this scene, said once).
+  if (facets.size() > std::size_t(max_texels)) {
+    std::fprintf(stderr, "scene '%s': %zu triangles are more than this driver's buffer textures hold (%d): no facet edges\n",
+                 scene.name.c_str(), facets.size(), max_texels);
+    facets.assign(1, kNotAFacet);
+  }
+  if (facets.empty()) facets.push_back(kNotAFacet);
+  glCreateBuffers(1, &id);
+  facet_colours_ = gl::Buffer(id);
+  glNamedBufferStorage(id, GLsizeiptr(facets.size()), facets.data(), 0);
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+  facet_colour_texture_ = gl::Texture(id);
+  glTextureBuffer(id, GL_R8UI, facet_colours_.get());
   gl::check("uploading the scene");
 }
 
@@ -90,6 +110,11 @@ void GpuScene::draw(GLuint program) const {
   const GLint depth_bias = glGetUniformLocation(program, "u_depth_bias");
   const GLint texture = glGetUniformLocation(program, "u_texture");
   if (texture >= 0) glProgramUniform1i(program, texture, 0);
+  const GLint facet_colours = glGetUniformLocation(program, "u_facet_colours");
+  if (facet_colours >= 0) {
+    glProgramUniform1i(program, facet_colours, kFacetColourUnit);
+    glBindTextureUnit(kFacetColourUnit, facet_colour_texture_.get());
+  }
   const GLint anisotropy = glGetUniformLocation(program, "u_texture_anisotropy");
   if (anisotropy >= 0) glProgramUniform1f(program, anisotropy, texture_anisotropy_);
   for (const DrawRange& d : draws_) {

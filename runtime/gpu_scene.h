@@ -10,6 +10,10 @@
 
 namespace rsaa {
 
+// The texture unit GpuScene::draw binds the per-triangle facet colours to: free while the scene
+// draws (its texture at 0, RsaaPass's pre-pass textures at 13-15 with RsaaSettings' defaults).
+constexpr int kFacetColourUnit = 12;
+
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
@@ -17,8 +21,9 @@ class GpuScene {
   // Draws every triangle with `program` bound. Attribute locations: 0 position, 1 normal, 2 uv,
   // 3 albedo, 4 filter alpha. Sets u_texture (unit 0), u_has_texture, u_primitive_base (so that
   // primitive ids are unique across draw calls), u_material and u_texture_anisotropy when the
-  // program has them. Binds the point lights (uniform
-  // block binding 4) for every shading pass that follows.
+  // program has them, and u_facet_colours (a usamplerBuffer on unit kFacetColourUnit: per
+  // triangle, runtime/smoothing_groups.h) for the facet edges' programs. Binds the point lights
+  // (uniform block binding 4) for every shading pass that follows.
   void draw(GLuint program) const;
 
   glm::vec3 background() const { return background_; }
@@ -26,7 +31,8 @@ class GpuScene {
 
  private:
   gl::VertexArray vao_;
-  gl::Buffer vertices_, indices_, point_lights_;
+  gl::Buffer vertices_, indices_, point_lights_, facet_colours_;
+  gl::Texture facet_colour_texture_;
   std::vector<gl::Texture> textures_;
   std::vector<DrawRange> draws_;
   glm::vec3 background_;

@@ -93,7 +93,10 @@
 //                                 centre_primitive (0 for one draw per frame; default 0)
 //   u_material (uint)             with material_edges: the draw's material as written into
 //                                 centre_primitive's second channel (default 0; with
-//                                 facet_materials, flat-shaded triangles write their facet's)
+//                                 facet_materials, facets write their facet's)
+//   u_facet_colours (usamplerBuffer) with facet_materials: per triangle of the draws (indexed by
+//                                 u_primitive_base + gl_PrimitiveIDIn), 0 or 0x80 | colour
+//                                 (runtime/smoothing_groups.h; GpuScene binds it at unit 12)
 //
 // The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling,
 // logic op and rasterizer discard off, filled polygons, colour mask: the subsample's channel
@@ -191,12 +194,13 @@ struct RsaaSettings {
   // by default (no scene measured loses, README "Material edges").
   bool material_edges = false;
   // Ours, with material_edges: the pass's own pre-pass program (render_subsamples) gives each
-  // flat-shaded triangle (its three vertex normals are equal) a material made from its shading
-  // normal instead of u_material (shaders/scene_facet_material.glsl), so that the facets of a
-  // flat-shaded mesh, which the geometric similarity calls one surface where they meet at a
-  // gentle angle, differ as their shading does. The G-buffer must write the same materials
-  // (SceneRenderer with facet_materials does; an engine drawing its own pre-pass gives its
-  // facets materials itself). Off by default (README, *Facet edges*).
+  // facet (a smoothing group parted from its neighbours by creases of the shading normals, or a
+  // flat one: runtime/smoothing_groups.h) a material made from its colour in u_facet_colours and
+  // u_material (shaders/scene_facet_material.glsl), so that the facets of a flat-shaded mesh,
+  // which the geometric similarity calls one surface where they meet at a gentle angle, differ as
+  // their shading does. The G-buffer must write the same materials (SceneRenderer with
+  // facet_materials does; an engine drawing its own pre-pass gives its facets materials itself).
+  // Off by default (README, *Facet edges*).
   bool facet_materials = false;
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver), each

@@ -14,7 +14,7 @@ namespace rsaa {
 
 class SceneRenderer {
  public:
-  // facet_materials: the G-buffer program writes flat-shaded triangles' facet materials
+  // facet_materials: the G-buffer program writes facets' materials
   // (RsaaSettings::facet_materials, shaders/scene_facet_material.glsl) instead of their draw's.
   explicit SceneRenderer(bool facet_materials = false);
 

@@ -32,8 +32,8 @@ struct TechniqueOptions {
   std::string fetch_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string material_edges = "on";         // rsaa: on (default: the renderer knows each draw's
                                              // material) | off (geometry only, the paper's)
-  std::string facet_edges = "off";           // rsaa: off (default) | on (flat-shaded facets differ
-                                             // by material: RsaaSettings::facet_materials)
+  std::string facet_edges = "off";           // rsaa: off (default) | on (facets parted by shading
+                                             // creases differ by material: RsaaSettings::facet_materials)
   std::string post = "compute";      // rsaa: compute (edge list) | edges (two passes) | single (RsaaSettings::post)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the

@@ -34,7 +34,7 @@ void main() {
   vec3 face = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
   float side = scene_normal_side(face, v_in[0].view_normal + v_in[1].view_normal + v_in[2].view_normal,
                                  v_in[0].view_position);
-  uint material = scene_facet_material(v_in[0].view_normal, v_in[1].view_normal, v_in[2].view_normal);
+  uint material = scene_facet_material();
   for (int i = 0; i < 3; ++i) {
     gl_Position = gl_in[i].gl_Position;
     gl_PrimitiveID = gl_PrimitiveIDIn;

@@ -694,16 +694,17 @@ std::string write_smooth_wave(const test::TempDir& dir, int n, double a) {
   return path;
 }
 
-// A smooth-shaded model has no flat-shaded triangle: facet materials leave its G-buffer, masks and
-// image exactly as they were, a finely tessellated one too (whose neighbouring normals agree
-// within 0.3 degrees: a test of closeness instead of equality drew material edges across it); a
-// material edge between coplanar parts stays one (the facet material hashes the draw's material in).
+// A smooth-shaded model has no crease in its shading: facet materials leave its G-buffer, masks
+// and image exactly as they were, a finely tessellated one too (whose neighbouring normals agree
+// within 0.3 degrees: a test of closeness of a triangle's own normals drew material edges across
+// it); a material edge between coplanar parts stays one (the facet material hashes the draw's
+// material in).
 TEST_F(Runtime, FacetEdgesLeaveSmoothShadingAndMaterialEdgesAlone) {
   RsaaSettings plain = rsaa_settings(technique_options("rsaa", 8));
   RsaaSettings facets = plain;
   facets.facet_materials = true;
   test::TempDir dir;
-  for (const std::string& smooth : {std::string("/usr/share/assimp/models/Collada/duck.dae"),
+  for (const std::string& smooth : {std::string("/usr/share/assimp/models/OBJ/WusonOBJ.obj"),
                                     write_smooth_wave(dir, 160, 0.05)}) {
     const RsaaRun smooth_with = rsaa_run(smooth, facets), smooth_without = rsaa_run(smooth, plain);
     EXPECT_EQ(smooth_with.masks, smooth_without.masks) << smooth;

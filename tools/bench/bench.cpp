@@ -94,7 +94,7 @@ std::vector<TechniqueOptions> default_techniques() {
   // The defaults with the culled jittered pre-pass, beside the full one (same masks but where
   // features thinner than a pixel slip between pixel centres).
   rsaa_with(8, [](TechniqueOptions& o) { o.prepass_cull = "neighbours"; });
-  // The defaults with facet edges (ours, an option): flat-shaded facets differ by material.
+  // The defaults with facet edges (ours, an option): facets parted by shading creases differ by material.
   rsaa_with(8, [](TechniqueOptions& o) { o.facet_edges = "on"; });
   return list;
 }

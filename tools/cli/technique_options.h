@@ -74,9 +74,9 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "material than the centre's is dissimilar: colour edges between coplanar parts)")
       ->capture_default_str();
   cmd->add_option("--facet-edges", o.facet_edges,
-                  "rsaa (ours, needs --material-edges on): off | on (a flat-shaded triangle's material is made from "
-                  "its shading normal, so a subsample on another facet of a flat-shaded mesh is dissimilar: the "
-                  "shading creases the geometry calls one surface)")
+                  "rsaa (ours, needs --material-edges on): off | on (triangles parted by a crease of their shading "
+                  "normals, and flat surfaces, get materials of their own, so a subsample on another facet of a "
+                  "flat-shaded mesh is dissimilar: the shading creases the geometry calls one surface)")
       ->capture_default_str();
   cmd->add_option("--post", o.post,
                   "rsaa post-process: compute (a compute shader lists the pixels to resolve, the resolve runs "
