@@ -178,10 +178,10 @@ std::vector<std::uint8_t> facet_colours(const Scene& scene) {
   meets.erase(std::unique(meets.begin(), meets.end()), meets.end());
   const FlatGroups flat = flat_groups(scene, parent);
 
-  // Greedy colouring, groups in the order of their first triangle; facets take 1..127. A flat
-  // group that meets no other across a crease takes a hash of its normal in 0..127: flat parts
-  // of one plane in two draws (a floor's tiles of two materials) then differ exactly as their
-  // draws' materials do, flat parts facing other ways (a wall through a floor) 127 times in 128.
+  // Colours 1..127. A flat group that meets no other across a crease takes its normal's colour (a
+  // hash): flat parts of one plane in two draws (a floor's tiles of two materials) then differ
+  // exactly as their draws' materials do, flat parts facing other ways (a wall through a floor)
+  // 126 times in 127. Facets parted by creases: greedy, in the order of their first triangle.
   constexpr int kColours = 127, kNoColour = -2;
   std::vector<std::int16_t> group_colour(triangles, -1);
   for (std::uint32_t t = 0; t < triangles; ++t) {
@@ -191,15 +191,18 @@ std::vector<std::uint8_t> facet_colours(const Scene& scene) {
                                           [](const auto& x, const auto& y) { return x.first < y.first; });
       if (range.first == range.second) {
         // Else shading continuous all round: not a facet.
-        group_colour[r] = flat.flat[r] ? std::int16_t(normal_hash(flat.normal[r]) % 128u) : kNoColour;
+        group_colour[r] = flat.flat[r] ? std::int16_t(1 + normal_hash(flat.normal[r]) % kColours) : kNoColour;
       } else {
         std::bitset<kColours> used;
         for (auto it = range.first; it != range.second; ++it)
           if (group_colour[it->second] > 0) used.set(std::size_t(group_colour[it->second] - 1));
-        // Start from a hash of the group, so that facets that do not meet (a front facet over a
+        // Start from the colour of a flat group's normal, as a flat group without creases takes
+        // (coplanar pieces of one face that share no welded side, a T-junction, then match), or
+        // from a hash of a curved group, so that facets that do not meet (a front facet over a
         // back facet at a silhouette) differ too, 126 times in 127.
         std::uint32_t start = r * 2654435761u;
         start ^= start >> 16;
+        if (flat.flat[r]) start = normal_hash(flat.normal[r]);
         int c = 0;
         while (c < kColours && used.test((start + std::uint32_t(c)) % kColours)) ++c;
         group_colour[r] = std::int16_t(1 + (start + std::uint32_t(c < kColours ? c : 0)) % kColours);

@@ -8,10 +8,11 @@
 // crease: flat shading draws a colour step there, which SADP cannot see when the facets meet at
 // a gentle angle. A group is a facet when a crease parts it from another group, or when its
 // shading is one normal throughout (a flat floor or wall: told apart from the objects on it,
-// which SADP cannot do at grazing angles). A facet gets a colour in 0..127 that differs from
-// every facet it meets across a crease (greedy colouring from a hash of the group; one meeting
-// 128 or more others reuses one). Other groups (a smooth mesh; a flat face continued by a
-// smooth bevel, whose normals carry on across the edge) keep their draw's material.
+// which SADP cannot do at grazing angles). A facet gets a colour in 1..127: a flat one its
+// normal's (a hash), unless a facet it meets across a crease has that colour, then the next
+// free one; a curved one the first free one from a hash of the group (one meeting 127 or more
+// others reuses one). Other groups (a smooth mesh; a flat face continued by a smooth bevel, whose
+// normals carry on across the edge) keep their draw's material.
 //
 // Deterministic (the order of the triangles decides), O(n log n) in the triangles; while it runs
 // it holds about 90 bytes per triangle. GpuScene computes it for every scene it uploads (a lat-long

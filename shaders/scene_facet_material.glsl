@@ -7,8 +7,8 @@
 // The facets are found once per scene from the shading normals on both sides of each edge
 // (runtime/smoothing_groups.h): a triangle's facet value is 0 where its smooth group is neither
 // parted from another by a crease nor flat (it keeps the draw's material: smooth meshes, and flat
-// faces continued by smooth bevels, add no edge), else 0x80 | colour (1..127 for facets parted by
-// creases, differing from every facet met across one; 0 for a flat surface on its own, a floor).
+// faces continued by smooth bevels, add no edge), else 0x80 | colour (1..127, differing from
+// every facet met across a crease; a flat facet's from its normal where it can: a floor).
 // The material: bit 7 set (a facet's low byte never equals a draw material below 128), the low 7
 // bits the colour plus the draw's material (flat surfaces of two draws differ as the draws do),
 // the high 24 bits a hash of the draw's material (docs/conventions.md).
