@@ -12,7 +12,7 @@
 
 namespace rsaa {
 
-GpuScene::GpuScene(const Scene& scene)
+GpuScene::GpuScene(const Scene& scene, bool with_facet_colours)
     : draws_(scene.draws),
       background_(scene.background),
       texture_anisotropy_(scene.texture_anisotropy),
@@ -44,6 +44,12 @@ GpuScene::GpuScene(const Scene& scene)
     glVertexArrayAttribFormat(id, a.location, a.size, GL_FLOAT, GL_FALSE, GLuint(a.offset));
     glVertexArrayAttribBinding(id, a.location, 0);
   }
+  for (std::size_t d = 0; d < scene.draws.size(); ++d)
+    if (scene.draws[d].first_index % 3 != 0 || scene.draws[d].index_count % 3 != 0)
+      throw std::invalid_argument("scene '" + scene.name + "': draw " + std::to_string(d) +
+                                  " does not start and end on a triangle (first index " +
+                                  std::to_string(scene.draws[d].first_index) + ", " +
+                                  std::to_string(scene.draws[d].index_count) + " indices)");
   if (!(scene.texture_anisotropy >= 1.0f && scene.texture_anisotropy <= kMaxTextureAnisotropy))
     throw std::invalid_argument("scene '" + scene.name + "': texture anisotropy " +
                                 std::to_string(scene.texture_anisotropy) + " is not within 1.." +
@@ -81,27 +87,33 @@ GpuScene::GpuScene(const Scene& scene)
   point_lights_ = gl::Buffer(id);
   glNamedBufferStorage(id, GLsizeiptr(block.size() * sizeof(float)), block.data(), 0);
 
-  std::vector<std::uint8_t> facets = facet_colours(scene);
-  GLint max_texels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
-  // A buffer texture larger than the driver's limit reads as zeros: then no triangle is a facet
-  // (facet edges off for this scene, said once).
-  if (facets.size() > std::size_t(max_texels)) {
-    std::fprintf(stderr, "scene '%s': %zu triangles are more than this driver's buffer textures hold (%d): no facet edges\n",
-                 scene.name.c_str(), facets.size(), max_texels);
-    facets.assign(1, kNotAFacet);
+  if (with_facet_colours) {
+    std::vector<std::uint8_t> facets = facet_colours(scene);
+    GLint max_texels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+    // More triangles than a buffer texture holds: none is a facet (the shader reads 0 past the
+    // buffer's size), said once.
+    if (facets.size() > std::size_t(max_texels)) {
+      std::fprintf(stderr, "scene '%s': %zu triangles are more than this driver's buffer textures hold (%d): no facet edges\n",
+                   scene.name.c_str(), facets.size(), max_texels);
+      facets.assign(1, kNotAFacet);
+    }
+    if (facets.empty()) facets.push_back(kNotAFacet);
+    glCreateBuffers(1, &id);
+    facet_colours_ = gl::Buffer(id);
+    glNamedBufferStorage(id, GLsizeiptr(facets.size()), facets.data(), 0);
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+    facet_colour_texture_ = gl::Texture(id);
+    glTextureBuffer(id, GL_R8UI, facet_colours_.get());
+    has_facet_colours_ = true;
   }
-  if (facets.empty()) facets.push_back(kNotAFacet);
-  glCreateBuffers(1, &id);
-  facet_colours_ = gl::Buffer(id);
-  glNamedBufferStorage(id, GLsizeiptr(facets.size()), facets.data(), 0);
-  glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
-  facet_colour_texture_ = gl::Texture(id);
-  glTextureBuffer(id, GL_R8UI, facet_colours_.get());
   gl::check("uploading the scene");
 }
 
 void GpuScene::draw(GLuint program) const {
+  const GLint facet_colours = glGetUniformLocation(program, "u_facet_colours");
+  if (facet_colours >= 0 && !has_facet_colours_)
+    throw std::logic_error("a facet edges program draws a scene uploaded without facet colours (GpuScene(scene, true))");
   glBindBufferBase(GL_UNIFORM_BUFFER, 4, point_lights_.get());
   glBindVertexArray(vao_.get());
   const GLint has_texture = glGetUniformLocation(program, "u_has_texture");
@@ -110,10 +122,10 @@ void GpuScene::draw(GLuint program) const {
   const GLint depth_bias = glGetUniformLocation(program, "u_depth_bias");
   const GLint texture = glGetUniformLocation(program, "u_texture");
   if (texture >= 0) glProgramUniform1i(program, texture, 0);
-  const GLint facet_colours = glGetUniformLocation(program, "u_facet_colours");
+  GLint facet_unit = -1;
   if (facet_colours >= 0) {
-    glProgramUniform1i(program, facet_colours, kFacetColourUnit);
-    glBindTextureUnit(kFacetColourUnit, facet_colour_texture_.get());
+    glGetUniformiv(program, facet_colours, &facet_unit);
+    glBindTextureUnit(GLuint(facet_unit), facet_colour_texture_.get());
   }
   const GLint anisotropy = glGetUniformLocation(program, "u_texture_anisotropy");
   if (anisotropy >= 0) glProgramUniform1f(program, anisotropy, texture_anisotropy_);
@@ -129,6 +141,7 @@ void GpuScene::draw(GLuint program) const {
                    reinterpret_cast<const void*>(std::size_t(d.first_index) * sizeof(std::uint32_t)));
   }
   glBindVertexArray(0);
+  if (facet_unit >= 0) glBindTextureUnit(GLuint(facet_unit), 0);
 }
 
 View make_view(const Camera& camera, int width, int height) {

@@ -577,6 +577,18 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     throw std::invalid_argument("RSAA prepass_first_unit " + std::to_string(settings.prepass_first_unit) +
                                 ": the pre-pass needs units " + std::to_string(settings.prepass_first_unit) +
                                 " to +2, this driver has " + std::to_string(units) + " fragment texture units");
+  if (settings.facet_materials) {
+    GLint geometry_units = 0;
+    glGetIntegerv(GL_MAX_GEOMETRY_TEXTURE_IMAGE_UNITS, &geometry_units);
+    const int unit = settings.facet_colours_unit;
+    // Two samplers of different types on one unit make a draw fail (GL_INVALID_OPERATION), which
+    // some drivers do not report: refused here instead.
+    if (unit < 0 || unit >= geometry_units || (unit >= settings.prepass_first_unit && unit <= settings.prepass_first_unit + 2))
+      throw std::invalid_argument("RSAA facet_colours_unit " + std::to_string(unit) +
+                                  ": must be below this driver's " + std::to_string(geometry_units) +
+                                  " geometry texture units and not one of the pre-pass's units " +
+                                  std::to_string(settings.prepass_first_unit) + " to +2");
+  }
   if (settings.uniform_binding < 0 || settings.uniform_binding >= bindings)
     throw std::invalid_argument("RSAA uniform_binding " + std::to_string(settings.uniform_binding) +
                                 " is not below this driver's " + std::to_string(bindings) + " uniform buffer bindings");
@@ -679,6 +691,9 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                              {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_subsample.frag")}},
                                             defines + (settings.facet_materials ? "#define SCENE_FACET_MATERIALS\n" : ""),
                                             "RSAA pre-pass");
+  if (settings.facet_materials)
+    glProgramUniform1i(gl_->subsample_program.get(),
+                       glGetUniformLocation(gl_->subsample_program.get(), "u_facet_colours"), settings.facet_colours_unit);
   if (cull_)
     gl_->cull_program = gl::make_program({{GL_VERTEX_SHADER, gl::shader_source("fullscreen.vert")},
                                           {GL_FRAGMENT_SHADER, gl::shader_source("rsaa_prepass_cull.frag")}},

@@ -96,7 +96,7 @@
 //                                 facet_materials, facets write their facet's)
 //   u_facet_colours (usamplerBuffer) with facet_materials: per triangle of the draws (indexed by
 //                                 u_primitive_base + gl_PrimitiveIDIn), 0 or 0x80 | colour
-//                                 (runtime/smoothing_groups.h; GpuScene binds it at unit 12)
+//                                 (runtime/smoothing_groups.h), at settings.facet_colours_unit
 //
 // The pre-pass state: depth test on (GL_LESS, depth writes on), blending, scissor test, culling,
 // logic op and rasterizer discard off, filled polygons, colour mask: the subsample's channel
@@ -266,6 +266,10 @@ struct RsaaSettings {
   // Checked against the driver's limits.
   int prepass_first_unit = 13;
   int uniform_binding = 13;
+  // With facet_materials: the unit the pass's own pre-pass program reads u_facet_colours from (the
+  // caller's draw binds the facet colours there; GpuScene::draw binds them at the unit the
+  // program names). Refused when it is one of the pre-pass's three units.
+  int facet_colours_unit = 12;
 };
 
 // The #define lines that configure shaders/rsaa_prepass.glsl and rsaa_post.glsl for `settings`,

@@ -21,7 +21,10 @@ SceneRenderer::SceneRenderer(bool facet_materials)
     : shade_(make_scene_program("", "scene shading")),
       gbuffer_(make_scene_program(std::string("#define RSAA_GBUFFER\n#define RSAA_SAMPLE_COUNT 1\n") +
                                       (facet_materials ? "#define SCENE_FACET_MATERIALS\n" : ""),
-                                  "scene shading + G-buffer")) {}
+                                  "scene shading + G-buffer")) {
+  if (facet_materials)
+    glProgramUniform1i(gbuffer_.get(), glGetUniformLocation(gbuffer_.get(), "u_facet_colours"), kFacetColourUnit);
+}
 
 void SceneRenderer::draw(const GpuScene& scene, const View& view, glm::vec2 jitter_ndc, GLuint program,
                          GLenum depth_func) {

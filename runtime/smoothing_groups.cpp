@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <cstdlib>
 
 namespace rsaa {
 namespace {
@@ -48,6 +49,8 @@ std::vector<std::uint32_t> welded_positions(const std::vector<SceneVertex>& vert
 
 // One triangle's side: the welded ends (a < b) and the vertices that carry the triangle's
 // normals there.
+constexpr std::size_t kMaxPairedSides = 16;
+
 struct Side {
   std::uint64_t ends;  // a << 32 | b
   std::uint32_t triangle, vertex_a, vertex_b;
@@ -55,27 +58,32 @@ struct Side {
 
 // A usable shading normal: finite and not zero.
 bool usable(const glm::vec3& n) {
-  const float length2 = glm::dot(n, n);
-  return std::isfinite(length2) && length2 > 0.0f;
+  const double length2 = glm::dot(glm::dvec3(n), glm::dvec3(n));
+  return std::isfinite(length2) && length2 > 0.0;
 }
 
-const float kSmoothingCosine = float(std::cos(kSmoothingNormalDegrees * 3.14159265358979323846 / 180.0));
+const double kSmoothingCosine = std::cos(kSmoothingNormalDegrees * 3.14159265358979323846 / 180.0);
 
+// In double: normals of any finite length compare by direction alone.
 bool agree(const glm::vec3& n0, const glm::vec3& n1) {
-  return glm::dot(n0, n1) >= kSmoothingCosine * std::sqrt(glm::dot(n0, n0) * glm::dot(n1, n1));
+  const glm::dvec3 a(n0), b(n1);
+  return glm::dot(a, b) >= kSmoothingCosine * std::sqrt(glm::dot(a, a)) * std::sqrt(glm::dot(b, b));
 }
 
 enum class Join { smooth, crease, unknown };
 
-// How two triangles' normals at the two ends of their shared side compare.
+// How two triangles' normals at the two ends of their shared side compare: a crease where they
+// differ at both ends. Where they agree at one end (a shared vertex, or a hard edge that ends in a
+// smooth surface) the shading step fades to nothing along the side, and marking it made false
+// edges on smooth models (X/fromtruespace_bin32.x -0.99 dB at 640x480, 5-20 degree steps that
+// end mid-surface; -0.12 with this rule).
 Join shading_across(const std::vector<SceneVertex>& vertices, const Side& p, const Side& q) {
-  bool crease = false;
+  bool crease = true;
   for (auto [v0, v1] : {std::pair{p.vertex_a, q.vertex_a}, std::pair{p.vertex_b, q.vertex_b}}) {
-    if (v0 == v1) continue;
     const glm::vec3 n0 = vertices[v0].normal, n1 = vertices[v1].normal;
     // A broken model's normals (zero, not finite: a degenerate triangle's) neither join nor part.
     if (!usable(n0) || !usable(n1)) return Join::unknown;
-    crease = crease || !agree(n0, n1);
+    crease = crease && v0 != v1 && !agree(n0, n1);
   }
   return crease ? Join::crease : Join::smooth;
 }
@@ -113,7 +121,7 @@ FlatGroups flat_groups(const Scene& scene, std::vector<std::uint32_t>& parent) {
 
 // A hash of a unit normal's direction quantised to about 0.6 degrees.
 std::uint32_t normal_hash(const glm::vec3& n) {
-  const glm::ivec3 q = glm::ivec3(glm::round(glm::normalize(n) * 96.0f)) + 128;
+  const glm::ivec3 q = glm::ivec3(glm::round(glm::normalize(glm::dvec3(n)) * 96.0)) + 128;
   std::uint32_t h = std::uint32_t(q.x) * 73856093u ^ std::uint32_t(q.y) * 19349663u ^ std::uint32_t(q.z) * 83492791u;
   h ^= h >> 13;
   h *= 0x5bd1e995u;
@@ -153,17 +161,25 @@ std::vector<std::uint8_t> facet_colours(const Scene& scene) {
     std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
       return x.ends != y.ends ? x.ends < y.ends : x.triangle < y.triangle;
     });
-    for (std::size_t k = 1; k < sides.size(); ++k) {
-      const Side& p = sides[k - 1];
-      const Side& q = sides[k];
-      if (p.ends != q.ends || p.triangle == q.triangle) continue;
-      const Join join = shading_across(scene.vertices, p, q);
-      if (join == Join::smooth)
-        parent[find_root(parent, p.triangle)] = find_root(parent, q.triangle);
-      else if (join == Join::crease)
-        creases.emplace_back(p.triangle, q.triangle);
+    for (std::size_t run = 0, end = 0; run < sides.size(); run = end) {
+      while (end < sides.size() && sides[end].ends == sides[run].ends) ++end;
+      // Every pair on a side (three or more triangles on one side: a fin on a floor; the first
+      // kMaxPairedSides only, so that a degenerate fan cannot make this quadratic).
+      const std::size_t last = std::min(end, run + kMaxPairedSides);
+      for (std::size_t i = run; i < last; ++i)
+        for (std::size_t j = i + 1; j < last; ++j) {
+          const Side& p = sides[i];
+          const Side& q = sides[j];
+          if (p.triangle == q.triangle) continue;
+          const Join join = shading_across(scene.vertices, p, q);
+          if (join == Join::smooth)
+            parent[find_root(parent, p.triangle)] = find_root(parent, q.triangle);
+          else if (join == Join::crease)
+            creases.emplace_back(p.triangle, q.triangle);
+        }
     }
   }
+  sides = {};  // freed before the colouring
 
   // Groups and the groups they meet across creases (both ways, by root).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> meets;
@@ -183,19 +199,22 @@ std::vector<std::uint8_t> facet_colours(const Scene& scene) {
   // exactly as their draws' materials do, flat parts facing other ways (a wall through a floor)
   // 126 times in 127. Facets parted by creases: greedy, in the order of their first triangle.
   constexpr int kColours = 127, kNoColour = -2;
+  const bool flat_only = std::getenv("RSAA_DEBUG_FLATONLY") != nullptr;
   std::vector<std::int16_t> group_colour(triangles, -1);
   for (std::uint32_t t = 0; t < triangles; ++t) {
     const std::uint32_t r = find_root(parent, t);
     if (group_colour[r] == -1) {
       const auto range = std::equal_range(meets.begin(), meets.end(), std::make_pair(r, 0u),
                                           [](const auto& x, const auto& y) { return x.first < y.first; });
-      if (range.first == range.second) {
+      if (!flat.flat[r] && flat_only) {
+        group_colour[r] = kNoColour;
+      } else if (range.first == range.second) {
         // Else shading continuous all round: not a facet.
         group_colour[r] = flat.flat[r] ? std::int16_t(1 + normal_hash(flat.normal[r]) % kColours) : kNoColour;
       } else {
         std::bitset<kColours> used;
         for (auto it = range.first; it != range.second; ++it)
-          if (group_colour[it->second] > 0) used.set(std::size_t(group_colour[it->second] - 1));
+          if (group_colour[it->second] > 0 && (!flat_only || flat.flat[it->second])) used.set(std::size_t(group_colour[it->second] - 1));
         // Start from the colour of a flat group's normal, as a flat group without creases takes
         // (coplanar pieces of one face that share no welded side, a T-junction, then match), or
         // from a hash of a curved group, so that facets that do not meet (a front facet over a

@@ -3,8 +3,8 @@
 // mark where shading is discontinuous and nowhere else.
 //
 // Two triangles of one draw that share a side (by vertex position, bit for bit: flat-shading
-// exporters repeat a corner once per facet) are in one group when their shading normals agree at
-// both ends of the side (within kSmoothingNormalDegrees); where they do not, the side is a
+// exporters repeat a corner once per facet) are in one group unless their shading normals differ
+// at both ends of the side (by more than kSmoothingNormalDegrees); where they do, the side is a
 // crease: flat shading draws a colour step there, which SADP cannot see when the facets meet at
 // a gentle angle. A group is a facet when a crease parts it from another group, or when its
 // shading is one normal throughout (a flat floor or wall: told apart from the objects on it,

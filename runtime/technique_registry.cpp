@@ -74,6 +74,14 @@ void validate(const TechniqueOptions& o) {
 
 std::string technique_label(const TechniqueOptions& o) { return find_technique(o.technique).label(o); }
 
+bool needs_facet_colours(const TechniqueOptions& o) { return o.technique == "rsaa" && o.facet_edges == "on"; }
+
+bool needs_facet_colours(const std::vector<TechniqueOptions>& options) {
+  for (const TechniqueOptions& o : options)
+    if (needs_facet_colours(o)) return true;
+  return false;
+}
+
 std::unique_ptr<Technique> make_technique(const TechniqueOptions& o, int width, int height) {
   validate(o);
   return find_technique(o.technique).make(o, width, height);

@@ -81,6 +81,10 @@ TechniqueOptions rsaa_default_without_extensions();
 // std::invalid_argument naming the bad option (unknown technique, unsupported sample count, ...).
 void validate(const TechniqueOptions& options);
 std::string technique_label(const TechniqueOptions& options);
+// Whether the technique draws with facet materials (rsaa --facet-edges on): its scene must be
+// uploaded with the facet colours (GpuScene(scene, true)).
+bool needs_facet_colours(const TechniqueOptions& options);
+bool needs_facet_colours(const std::vector<TechniqueOptions>& options);
 std::unique_ptr<Technique> make_technique(const TechniqueOptions& options, int width, int height);
 
 // options.samples, or `fallback` when 0 (the technique's default).

@@ -25,7 +25,9 @@ uniform uint u_primitive_base;           // the draw's first triangle
 // Called from a geometry shader (gl_PrimitiveIDIn: the triangle within its draw).
 uint scene_facet_material() {
 #ifdef SCENE_FACET_MATERIALS
-  uint facet = texelFetch(u_facet_colours, int(u_primitive_base + uint(gl_PrimitiveIDIn))).r;
+  int triangle = int(u_primitive_base + uint(gl_PrimitiveIDIn));
+  // Past the buffer (a scene larger than the driver's buffer textures, uploaded as one texel): 0.
+  uint facet = triangle < textureSize(u_facet_colours) ? texelFetch(u_facet_colours, triangle).r : 0u;
   if (facet != 0u) {
     uint h = (u_material + 1u) * 2654435761u;
     h ^= h >> 15u;

@@ -479,7 +479,7 @@ struct RsaaRun {
 
 RsaaRun rsaa_run(const std::string& scene_name, RsaaSettings settings, int width = kWidth, int height = kHeight) {
   const Scene scene = load_scene(scene_name);
-  const GpuScene gpu(scene);
+  const GpuScene gpu(scene, settings.facet_materials);
   const View view = make_view(choose_camera(scene, std::nullopt), width, height);
   settings.output_mask = true;
   const gl::Texture mask_texture = gl::make_texture_2d(GL_R32UI, width, height);

@@ -117,8 +117,9 @@ TEST(SmoothingGroups, AFlatShadedSphereIsAllFacetsAndNeighbouringFacetsDiffer) {
 
 // Two curved patches of a cylinder (radial normals, 30 degrees each, 3 quads wide) meeting along
 // a column of positions, each with its own vertices there; the second patch's normals on that
-// column turned by `turn_degrees`. With `two_draws` each patch is its own draw.
-Scene curved_patches(double turn_degrees, bool two_draws) {
+// column turned by `turn_degrees` (at its lower end only unless `both_ends`). With `two_draws`
+// each patch is its own draw.
+Scene curved_patches(double turn_degrees, bool two_draws, bool both_ends = true) {
   Scene s;
   const auto at = [](int k) {
     const double phi = 10.0 * k * kPi / 180.0;
@@ -133,7 +134,7 @@ Scene curved_patches(double turn_degrees, bool two_draws) {
         SceneVertex v;
         v.position = at(k) + glm::vec3(0, 0, z);
         v.normal = at(k);
-        if (patch == 1 && k == 3)
+        if (patch == 1 && k == 3 && (both_ends || z == 0.0f))
           v.normal = glm::vec3(float(std::cos(kPi / 6 + turn)), float(std::sin(kPi / 6 + turn)), 0.0f);
         s.vertices.push_back(v);
       }
@@ -156,7 +157,10 @@ TEST(SmoothingGroups, SmoothShadingMakesNoFacets) {
   for (std::uint8_t c : facet_colours(sphere(12, 24, false))) EXPECT_EQ(c, kNotAFacet);
   // Split vertices whose normals agree within a fraction of kSmoothingNormalDegrees.
   for (std::uint8_t c : facet_colours(curved_patches(0.3 * kSmoothingNormalDegrees, false))) EXPECT_EQ(c, kNotAFacet);
-  // Beyond the tolerance the same column is a crease: two facets of different colours.
+  // Turned at one end only (a hard edge ending in a smooth surface): the step fades along the
+  // side, no crease.
+  for (std::uint8_t c : facet_colours(curved_patches(2.0 * kSmoothingNormalDegrees, false, false))) EXPECT_EQ(c, kNotAFacet);
+  // Beyond the tolerance at both ends the column is a crease: two facets of different colours.
   const std::vector<std::uint8_t> creased = facet_colours(curved_patches(2.0 * kSmoothingNormalDegrees, false));
   ASSERT_EQ(creased.size(), 12u);
   for (std::size_t t = 0; t < 12; ++t) {

@@ -167,7 +167,7 @@ std::vector<TechniqueResult> run_bench(const BenchOptions& o, const Progress& pr
     const Camera start = choose_camera(loaded, std::nullopt);
     Scene scene = with_lights(loaded, start, o.lights);
     scene.texture_anisotropy = o.texture_anisotropy;
-    const GpuScene gpu(scene);
+    const GpuScene gpu(scene, needs_facet_colours(o.techniques));
     std::vector<Camera> cameras;
     for (int f = 0; f < o.orbit_frames; ++f) cameras.push_back(orbit_camera(start, f * o.orbit_degrees_per_frame));
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, o.width, o.height);

@@ -148,7 +148,7 @@ GrowthResults run_growth(const GrowthOptions& o, const Progress& progress) {
   for (std::size_t k = 0; k < rest.size(); k += kRoundSize)
     groups.emplace_back(rest.begin() + std::ptrdiff_t(k), rest.begin() + std::ptrdiff_t(std::min(rest.size(), k + kRoundSize)));
   const auto measure = [&](const Scene& s, int w, int h, GrowthAxis axis, int lights) {
-    const GpuScene gpu(s);
+    const GpuScene gpu(s, needs_facet_colours(o.techniques));
     const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, w, h);
     CopyPass copy(w, h);
     copy.time_ms(output.get());  // warm-up

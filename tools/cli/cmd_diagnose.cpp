@@ -96,7 +96,7 @@ int run_diagnose(const DiagnoseArgs& a) {
   StagedOutputs staged(a.out_dir, "rsaa diagnose");
   require_image_module();  // its images are written at the end: said now if they cannot be
   gl::HeadlessContext context;
-  const GpuScene gpu_scene(scene);
+  const GpuScene gpu_scene(scene, needs_facet_colours(options));
   const View view = make_view(camera, a.width, a.height);
 
   std::printf("diagnose %s on %s (%dx%d): rendering no AA, the reference and RSAA with its masks\n",

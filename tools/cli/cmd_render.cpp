@@ -33,7 +33,7 @@ int run_render(const RenderArgs& a) {
   if (!a.camera.empty()) camera = parse_camera(a.camera, scene.bounds_min(), scene.bounds_max());
   require_image_module();  // its images are written at the end: said now if they cannot be
   gl::HeadlessContext context;
-  const GpuScene gpu_scene(scene);
+  const GpuScene gpu_scene(scene, needs_facet_colours(a.technique));
   RenderStats stats;
   const Image image = render_frame(gpu_scene, choose_camera(scene, camera), a.technique, a.width,
                                    a.height, &stats);

@@ -64,7 +64,7 @@ const char* kHelp =
 class Viewer {
  public:
   Viewer(const ViewArgs& args, GLFWwindow* window, const Scene& scene, const Camera& camera)
-      : args_(args), window_(window), gpu_scene_(scene), camera_(camera), options_(args.technique),
+      : args_(args), window_(window), gpu_scene_(scene, needs_facet_colours(args.technique)), camera_(camera), options_(args.technique),
         output_(gl::make_texture_2d(GL_RGBA16F, args.width, args.height)),
         present_(make_fullscreen_program("present.frag", "")) {
     rebuild();
