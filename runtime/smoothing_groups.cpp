@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 #include <numeric>
-#include <cstdlib>
 
 namespace rsaa {
 namespace {
@@ -47,10 +46,12 @@ std::vector<std::uint32_t> welded_positions(const std::vector<SceneVertex>& vert
   return id;
 }
 
-// One triangle's side: the welded ends (a < b) and the vertices that carry the triangle's
-// normals there.
+// Triangles on one side compared pair by pair: the first this many (a degenerate fan must not
+// make the comparison quadratic).
 constexpr std::size_t kMaxPairedSides = 16;
 
+// One triangle's side: the welded ends (a < b) and the vertices that carry the triangle's
+// normals there.
 struct Side {
   std::uint64_t ends;  // a << 32 | b
   std::uint32_t triangle, vertex_a, vertex_b;
@@ -151,8 +152,7 @@ std::vector<std::uint8_t> facet_colours(const Scene& scene) {
       const std::uint32_t* corners = &scene.indices[3 * std::size_t(t)];
       if (std::max({corners[0], corners[1], corners[2]}) >= scene.vertices.size()) continue;
       for (int corner = 0; corner < 3; ++corner) {
-        std::uint32_t v0 = scene.indices[3 * std::size_t(t) + corner];
-        std::uint32_t v1 = scene.indices[3 * std::size_t(t) + (corner + 1) % 3];
+        std::uint32_t v0 = corners[corner], v1 = corners[(corner + 1) % 3];
         if (weld[v0] == weld[v1]) continue;  // a degenerate side
         if (weld[v0] > weld[v1]) std::swap(v0, v1);
         sides.push_back({std::uint64_t(weld[v0]) << 32 | weld[v1], t, v0, v1});
@@ -163,8 +163,7 @@ std::vector<std::uint8_t> facet_colours(const Scene& scene) {
     });
     for (std::size_t run = 0, end = 0; run < sides.size(); run = end) {
       while (end < sides.size() && sides[end].ends == sides[run].ends) ++end;
-      // Every pair on a side (three or more triangles on one side: a fin on a floor; the first
-      // kMaxPairedSides only, so that a degenerate fan cannot make this quadratic).
+      // Every pair on a side (three or more triangles on one side: a fin on a floor).
       const std::size_t last = std::min(end, run + kMaxPairedSides);
       for (std::size_t i = run; i < last; ++i)
         for (std::size_t j = i + 1; j < last; ++j) {
@@ -194,31 +193,26 @@ std::vector<std::uint8_t> facet_colours(const Scene& scene) {
   meets.erase(std::unique(meets.begin(), meets.end()), meets.end());
   const FlatGroups flat = flat_groups(scene, parent);
 
-  // Colours 1..127. A flat group that meets no other across a crease takes its normal's colour (a
-  // hash): flat parts of one plane in two draws (a floor's tiles of two materials) then differ
-  // exactly as their draws' materials do, flat parts facing other ways (a wall through a floor)
-  // 126 times in 127. Facets parted by creases: greedy, in the order of their first triangle.
+  // Colours 1..127, greedy over the facets in the order of their first triangle: the first colour
+  // that no facet met across a crease has, from a start that is a flat facet's normal's (a hash)
+  // or a curved facet's group's. A flat facet that meets none takes its normal's colour: flat
+  // parts of one plane in two draws (a floor's tiles of two materials) then differ exactly as
+  // their draws' materials do, and coplanar pieces of one face that share no welded side (a
+  // T-junction) match; facets that do not meet otherwise (a front facet over a back facet at a
+  // silhouette, a wall through a floor) differ 126 times in 127.
   constexpr int kColours = 127, kNoColour = -2;
-  const bool flat_only = std::getenv("RSAA_DEBUG_FLATONLY") != nullptr;
   std::vector<std::int16_t> group_colour(triangles, -1);
   for (std::uint32_t t = 0; t < triangles; ++t) {
     const std::uint32_t r = find_root(parent, t);
     if (group_colour[r] == -1) {
       const auto range = std::equal_range(meets.begin(), meets.end(), std::make_pair(r, 0u),
                                           [](const auto& x, const auto& y) { return x.first < y.first; });
-      if (!flat.flat[r] && flat_only) {
-        group_colour[r] = kNoColour;
-      } else if (range.first == range.second) {
-        // Else shading continuous all round: not a facet.
-        group_colour[r] = flat.flat[r] ? std::int16_t(1 + normal_hash(flat.normal[r]) % kColours) : kNoColour;
+      if (range.first == range.second && !flat.flat[r]) {
+        group_colour[r] = kNoColour;  // curved, shading continuous all round: not a facet
       } else {
         std::bitset<kColours> used;
         for (auto it = range.first; it != range.second; ++it)
-          if (group_colour[it->second] > 0 && (!flat_only || flat.flat[it->second])) used.set(std::size_t(group_colour[it->second] - 1));
-        // Start from the colour of a flat group's normal, as a flat group without creases takes
-        // (coplanar pieces of one face that share no welded side, a T-junction, then match), or
-        // from a hash of a curved group, so that facets that do not meet (a front facet over a
-        // back facet at a silhouette) differ too, 126 times in 127.
+          if (group_colour[it->second] > 0) used.set(std::size_t(group_colour[it->second] - 1));
         std::uint32_t start = r * 2654435761u;
         start ^= start >> 16;
         if (flat.flat[r]) start = normal_hash(flat.normal[r]);
