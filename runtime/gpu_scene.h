@@ -18,8 +18,9 @@ constexpr int kFacetColourUnit = 12;
 class GpuScene {
  public:
   // with_facet_colours: also finds the scene's facets (runtime/smoothing_groups.h; seconds for
-  // millions of triangles) for the programs of RSAA's facet edges (needs_facet_colours()).
-  explicit GpuScene(const Scene& scene, bool with_facet_colours = false);
+  // millions of triangles) for the programs of RSAA's facet edges, on by default since they are
+  // rsaa's default (a caller that knows its techniques passes needs_facet_colours()).
+  explicit GpuScene(const Scene& scene, bool with_facet_colours = true);
 
   // Draws every triangle with `program` bound. Attribute locations: 0 position, 1 normal, 2 uv,
   // 3 albedo, 4 filter alpha. Sets u_texture (unit 0), u_has_texture, u_primitive_base (so that

@@ -74,7 +74,11 @@ void validate(const TechniqueOptions& o) {
 
 std::string technique_label(const TechniqueOptions& o) { return find_technique(o.technique).label(o); }
 
-bool needs_facet_colours(const TechniqueOptions& o) { return o.technique == "rsaa" && o.facet_edges == "on"; }
+bool facet_edges_on(const TechniqueOptions& o) {
+  return o.facet_edges == "on" || (o.facet_edges == "auto" && o.material_edges == "on");
+}
+
+bool needs_facet_colours(const TechniqueOptions& o) { return o.technique == "rsaa" && facet_edges_on(o); }
 
 bool needs_facet_colours(const std::vector<TechniqueOptions>& options) {
   for (const TechniqueOptions& o : options)

@@ -32,8 +32,9 @@ struct TechniqueOptions {
   std::string fetch_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string material_edges = "on";         // rsaa: on (default: the renderer knows each draw's
                                              // material) | off (geometry only, the paper's)
-  std::string facet_edges = "off";           // rsaa: off (default) | on (facets parted by shading
-                                             // creases differ by material: RsaaSettings::facet_materials)
+  std::string facet_edges = "auto";          // rsaa: auto (default: on with material edges) | on | off
+                                             // (facets parted by shading creases, and flat surfaces,
+                                             // differ by material: RsaaSettings::facet_materials)
   std::string post = "compute";      // rsaa: compute (edge list) | edges (two passes) | single (RsaaSettings::post)
   int kernel = 2;                    // ssaa-filtered: 1 box, 2 five-tap, 3 alpha-driven mix
   double agaa_k = 0.0;               // agaa: characteristic length of eq. 1 in scene units (the
@@ -81,6 +82,8 @@ TechniqueOptions rsaa_default_without_extensions();
 // std::invalid_argument naming the bad option (unknown technique, unsupported sample count, ...).
 void validate(const TechniqueOptions& options);
 std::string technique_label(const TechniqueOptions& options);
+// Whether rsaa's facet edges are on: "on", or "auto" (the default) with material edges on.
+bool facet_edges_on(const TechniqueOptions& options);
 // Whether the technique draws with facet materials (rsaa --facet-edges on): its scene must be
 // uploaded with the facet colours (GpuScene(scene, true)).
 bool needs_facet_colours(const TechniqueOptions& options);

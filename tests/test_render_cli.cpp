@@ -85,7 +85,7 @@ TEST(RenderCli, BadInputFailsClearlyWithoutOutput) {
            {"--technique dyncov --rules evict", "--rules must be seed or surface"},
            {"--technique rsaa --code-bits 12", "--code-bits"},
            {"--technique rsaa --material-edges yes", "--material-edges must be off or on, not 'yes'"},
-           {"--technique rsaa --facet-edges yes", "--facet-edges must be off or on, not 'yes'"},
+           {"--technique rsaa --facet-edges yes", "--facet-edges must be off, on or auto, not 'yes'"},
            {"--technique rsaa --facet-edges on --material-edges off", "--facet-edges on needs --material-edges on"},
            {"--technique msaa --facet-edges on", "--facet-edges is an option of rsaa, not of msaa"},
            // Given, never ignored: an option of another technique, an empty value, a camera with a

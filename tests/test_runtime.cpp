@@ -177,9 +177,12 @@ TEST_F(Runtime, EveryVariantRunsWithinMeasuredQualityBounds) {
 TEST_F(Runtime, GrazingFloorSilhouettesAreFoundByTheDefaultSimilarity) {
   const Image reference = render("builtin:grazing", technique_options("ssaa", 64));
   const Image noaa = render("builtin:grazing", technique_options("noaa"));
-  TechniqueOptions sadp = technique_options("rsaa", 8);
+  // Facet edges off in both: the flat floor is a facet of its own, whose material edge finds these
+  // silhouettes with either similarity (this test is about the similarity).
+  TechniqueOptions by_default = technique_options("rsaa", 8);
+  by_default.facet_edges = "off";
+  TechniqueOptions sadp = by_default;
   sadp.similarity = "sadp";
-  const TechniqueOptions by_default = technique_options("rsaa", 8);
   ASSERT_EQ(by_default.similarity, "sadp-plane");
   const Image with_sadp = render("builtin:grazing", sadp);
   const Image with_default = render("builtin:grazing", by_default);
@@ -521,7 +524,7 @@ TEST_F(Runtime, TheOptionsBeyondThePaperAreDefaultsAndOffInThePapersVariants) {
   EXPECT_THROW(rsaa_shader_defines(bad, 8, false), std::invalid_argument);
   TechniqueOptions o = technique_options("rsaa", 8);
   o.split_cap = 3.0, o.multi_surface = "neighbours";
-  EXPECT_EQ(technique_label(o), "rsaa 8x sadp-plane auth1 cap3 ms sc fc me");
+  EXPECT_EQ(technique_label(o), "rsaa 8x sadp-plane auth1 cap3 ms sc fc me fe");
 }
 
 // The split cap only makes subsamples dissimilar (each changed mask is a subset of the paper's
@@ -647,10 +650,10 @@ TEST_F(Runtime, TheSplitCheckByDefaultHelpsTheGrazingScene) {
 // its own, so subsamples on a neighbouring facet are dissimilar and the creases are resampled.
 TEST_F(Runtime, FacetEdgesResolveTheCreasesOfAFlatShadedMesh) {
   const std::string sphere = "/usr/share/assimp/models/STL/sphereWithHole.stl";
-  RsaaSettings plain = rsaa_settings(technique_options("rsaa", 8));
-  ASSERT_FALSE(plain.facet_materials);
-  RsaaSettings facets = plain;
-  facets.facet_materials = true;
+  RsaaSettings facets = rsaa_settings(technique_options("rsaa", 8));
+  ASSERT_TRUE(facets.facet_materials);  // the renderer's default (--facet-edges auto)
+  RsaaSettings plain = facets;
+  plain.facet_materials = false;
   const Image reference = render(sphere, technique_options("ssaa", 64));
   const RsaaRun with = rsaa_run(sphere, facets), without = rsaa_run(sphere, plain);
   std::size_t changed = 0, all_similar_before = 0;
@@ -701,6 +704,7 @@ std::string write_smooth_wave(const test::TempDir& dir, int n, double a) {
 // material in).
 TEST_F(Runtime, FacetEdgesLeaveSmoothShadingAndMaterialEdgesAlone) {
   RsaaSettings plain = rsaa_settings(technique_options("rsaa", 8));
+  plain.facet_materials = false;
   RsaaSettings facets = plain;
   facets.facet_materials = true;
   test::TempDir dir;

@@ -86,7 +86,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.split_check = o.split_check;
   s.fetch_check = o.fetch_check;
   s.material_edges = o.material_edges == "on";
-  s.facet_materials = o.facet_edges == "on";
+  s.facet_materials = facet_edges_on(o);
   s.post = o.post;
   return s;
 }
@@ -126,8 +126,8 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --fetch-check must be off or neighbours, not '" + o.fetch_check + "'");
   if (o.material_edges != "off" && o.material_edges != "on")
     bad("rsaa --material-edges must be off or on, not '" + o.material_edges + "'");
-  if (o.facet_edges != "off" && o.facet_edges != "on")
-    bad("rsaa --facet-edges must be off or on, not '" + o.facet_edges + "'");
+  if (o.facet_edges != "off" && o.facet_edges != "on" && o.facet_edges != "auto")
+    bad("rsaa --facet-edges must be off, on or auto, not '" + o.facet_edges + "'");
   if (o.facet_edges == "on" && o.material_edges != "on")
     bad("rsaa --facet-edges on needs --material-edges on (facets differ by their materials)");
   if (o.post != "edges" && o.post != "compute" && o.post != "single")
@@ -142,7 +142,7 @@ std::string rsaa_extension_label(const TechniqueOptions& o) {
   if (o.split_check != "off") label << " sc";
   if (o.fetch_check != "off") label << " fc";
   if (o.material_edges != "off") label << " me";
-  if (o.facet_edges != "off") label << " fe";
+  if (facet_edges_on(o)) label << " fe";
   if (o.post != "compute") label << " " << o.post << "-pass";
   if (o.prepass_cull != "off") label << " cull";
   return label.str();

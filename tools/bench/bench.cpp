@@ -94,8 +94,9 @@ std::vector<TechniqueOptions> default_techniques() {
   // The defaults with the culled jittered pre-pass, beside the full one (same masks but where
   // features thinner than a pixel slip between pixel centres).
   rsaa_with(8, [](TechniqueOptions& o) { o.prepass_cull = "neighbours"; });
-  // The defaults with facet edges (ours, an option): facets parted by shading creases differ by material.
-  rsaa_with(8, [](TechniqueOptions& o) { o.facet_edges = "on"; });
+  // The defaults without facet edges (ours, a default since session 26: facets parted by shading
+  // creases, and flat surfaces, differ by material).
+  rsaa_with(8, [](TechniqueOptions& o) { o.facet_edges = "off"; });
   return list;
 }
 

@@ -74,7 +74,8 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "material than the centre's is dissimilar: colour edges between coplanar parts)")
       ->capture_default_str();
   cmd->add_option("--facet-edges", o.facet_edges,
-                  "rsaa (ours, needs --material-edges on): off | on (triangles parted by a crease of their shading "
+                  "rsaa (ours): auto (on with --material-edges on) | on (needs --material-edges on) | off "
+                  "(triangles parted by a crease of their shading "
                   "normals, and flat surfaces, get materials of their own, so a subsample on another facet of a "
                   "flat-shaded mesh is dissimilar: the shading creases the geometry calls one surface)")
       ->capture_default_str();
