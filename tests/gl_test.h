@@ -43,7 +43,7 @@ inline RsaaSettings paper_resolve(RsaaSettings settings = {}) {
 struct SceneFrame {
   SceneFrame(const std::string& scene_name, int width, int height, bool material_edges = false)
       : scene(load_scene(scene_name)),
-        gpu(scene),
+        gpu(scene, /*with_facet_colours=*/false),  // the pass's tests draw without facet materials
         view(make_view(choose_camera(scene, std::nullopt), width, height)),
         targets(width, height, material_edges) {
     renderer.draw_gbuffer(gpu, view, targets);
