@@ -63,8 +63,10 @@ const char* kHelp =
 
 class Viewer {
  public:
+  // The scene is uploaded once, with the facet colours: a key can switch to rsaa's defaults
+  // (which draw with facet edges) from any technique.
   Viewer(const ViewArgs& args, GLFWwindow* window, const Scene& scene, const Camera& camera)
-      : args_(args), window_(window), gpu_scene_(scene, needs_facet_colours(args.technique)), camera_(camera), options_(args.technique),
+      : args_(args), window_(window), gpu_scene_(scene, /*with_facet_colours=*/true), camera_(camera), options_(args.technique),
         output_(gl::make_texture_2d(GL_RGBA16F, args.width, args.height)),
         present_(make_fullscreen_program("present.frag", "")) {
     rebuild();
