@@ -200,7 +200,7 @@ struct RsaaSettings {
   // which the geometric similarity calls one surface where they meet at a gentle angle, differ as
   // their shading does. The G-buffer must write the same materials (SceneRenderer with
   // facet_materials does; an engine drawing its own pre-pass gives its facets materials itself).
-  // Off by default (README, *Facet edges*).
+  // Off here, as material_edges (the renderer's `--facet-edges auto` turns both on; README, *Facet edges*).
   bool facet_materials = false;
   // How the pre-pass samples the subsamples: "jittered" draws the geometry once per subsample
   // with the image shifted so that it lands on the pixel centre (any pattern, any driver), each

@@ -644,7 +644,7 @@ TEST_F(Runtime, TheSplitCheckByDefaultHelpsTheGrazingScene) {
   EXPECT_GT(with_check, no_check + 0.1);
 }
 
-// Facet edges (ours, an option): a flat-shaded mesh draws a colour edge at every facet crease, which
+// Facet edges (ours, the renderer's default): a flat-shaded mesh draws a colour edge at every facet crease, which
 // the geometric similarity calls one surface where facets meet at a gentle angle (a faceted sphere).
 // With facet materials the pass's pre-pass program and the G-buffer give each facet a material of
 // its own, so subsamples on a neighbouring facet are dissimilar and the creases are resampled.

@@ -15,7 +15,7 @@
 #   --only coverage: just the coverage family's goals and scale tests (about 30 minutes).
 #   --only goals: just RSAA's goals (issue 11) on the bench scenes and held-out models, facet
 #            edges on them and on 53 surveyed models (about 40 minutes: the last two steps took
-#            781 and 779 s in session 25).
+#            580 and 733 s in session 26).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0

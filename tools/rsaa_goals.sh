@@ -3,7 +3,7 @@
 # of options changes: against 64x SSAA, RSAA 4x and 8x with the defaults beside no AA, the
 # FXAA-style pass and hardware 4x MSAA, each RSAA column "without -> defaults" where WITHOUT are
 # options turning one default off (for example "--material-edges off"), or "defaults -> with"
-# where WITH are options beyond the defaults (for example "--facet-edges on"). Prints a Markdown
+# where WITH are options beyond the defaults (for example "--split-cap 3"). Prints a Markdown
 # table (8x below 4x MSAA marked "!") and the summary lines: mean gain over no AA, 8x over 4x,
 # against FXAA, the lowest change (with --with: the same for the options' column, and the
 # highest change). Keeps the images in OUT_DIR/<scene>/.
