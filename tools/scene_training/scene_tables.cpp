@@ -53,7 +53,7 @@ SceneTableReport train_scene_table(const SceneTableOptions& o, const OffsetTable
   if (o.training_views < 1 || o.held_out_views < 1) throw std::invalid_argument("need training and held-out views");
   validate_size(o.width, o.height);
   const Scene scene = load_scene_within(o.scene, 120.0);
-  const GpuScene gpu(scene);
+  const GpuScene gpu(scene, /*with_facet_colours=*/false);  // RsaaSettings{}: no facet materials
   const Camera start = choose_camera(scene, std::nullopt);
   const auto say = [&](const std::string& s) {
     if (progress) progress(s);
