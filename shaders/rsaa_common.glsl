@@ -96,7 +96,11 @@ float rsaa_similarity(vec3 p1, vec3 n1, vec3 p2, vec3 n2) {
 }
 
 // ---- similarity codes: 0 = no surface at the subsample, 1 + round-down(value * scale) else,
-// saturating at the largest code (the paper's dbits compression).
+// saturating one below the largest code (the paper's dbits compression). The largest code,
+// RSAA_CODE_MAX, is kept for a subsample on another surface than any geometric measure can say
+// (a surface over a background centre, another material) and decodes as the stored value 4 at
+// every width: saturated geometry (1.98 at 8 and 16 bits) and another material must not tie, or
+// the k-means split weighs "another facet" like a merely large geometric difference.
 #ifndef RSAA_CODE_BITS
 #define RSAA_CODE_BITS 8
 #endif
@@ -136,13 +140,14 @@ float rsaa_similarity_of_code_value(float stored) { return stored; }
 uint rsaa_encode_similarity(float value) {
   if (isnan(value)) return 1u;
   float scaled = rsaa_code_value(clamp(value, 0.0, 4.0e9)) * RSAA_CODE_SCALE;
-  return scaled >= float(RSAA_CODE_MAX - 1u) ? RSAA_CODE_MAX : uint(scaled) + 1u;
+  return scaled >= float(RSAA_CODE_MAX - 2u) ? RSAA_CODE_MAX - 1u : uint(scaled) + 1u;
 }
 
 // A subsample with no surface compares as equal to a background centre and as maximally
 // different from a surface centre.
 float rsaa_decode_similarity(uint code, bool centre_is_surface) {
   if (code == 0u) return centre_is_surface ? 1.0e9 : 0.0;
+  if (code == RSAA_CODE_MAX) return rsaa_similarity_of_code_value(4.0);
   return rsaa_similarity_of_code_value(float(code - 1u) / RSAA_CODE_SCALE);
 }
 

@@ -137,9 +137,11 @@ static const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
 static const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
 #endif
 
+// rsaa_common.glsl's rsaa_decode_similarity: the largest code (another surface than geometry
+// can say) decodes as the stored value 4 at every width.
 float RsaaDecodeSimilarity(uint code, bool centre_is_surface) {
   if (code == 0u) return centre_is_surface ? 1.0e9 : 0.0;
-  float stored = float(code - 1u) / RSAA_CODE_SCALE;
+  float stored = code == RSAA_CODE_MAX ? 4.0 : float(code - 1u) / RSAA_CODE_SCALE;
 #ifdef RSAA_SIMILARITY_DEPTH
   return 0.05 * (exp2(8.0 * stored) - 1.0);
 #else

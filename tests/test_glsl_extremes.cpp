@@ -21,7 +21,8 @@ struct ProbeCase {
 
 struct ProbeResult {
   float sadp, depth_difference, decoded, plane_gap;
-  std::uint32_t code, code_of_zero, pad[2];
+  std::uint32_t code, code_of_zero, code_max;
+  float decoded_max;  // rsaa_decode_similarity(RSAA_CODE_MAX): another surface than geometry says
 };
 
 // Evaluates the shared functions for each case with the given code bits.
@@ -41,7 +42,8 @@ void main() {
                            rsaa_depth_difference(c.p1.xyz, c.p2.xyz),
                            rsaa_decode_similarity(code, true),
                            rsaa_plane_gap(c.p1.xyz, c.n1.xyz, c.p2.xyz, c.n2.xyz));
-  results[i].codes = uvec4(code, rsaa_encode_similarity(0.0), 0u, 0u);
+  results[i].codes = uvec4(code, rsaa_encode_similarity(0.0), RSAA_CODE_MAX,
+                           floatBitsToUint(rsaa_decode_similarity(RSAA_CODE_MAX, true)));
 })";
   const gl::Program program = gl::make_program(
       {{GL_COMPUTE_SHADER, source}}, "#define RSAA_CODE_BITS " + std::to_string(code_bits) + "\n" + defines,
@@ -137,12 +139,21 @@ TEST_F(GlslExtremes, CodesRoundTripAndSaturate) {
     EXPECT_NEAR(r[1].decoded, 0.4, step) << bits;               // quantised down to 1/scale
     EXPECT_LE(r[1].decoded, 0.4f) << bits;
     EXPECT_NEAR(r[2].decoded, 1.0, step) << bits;
-    for (int k : {5, 6}) EXPECT_EQ(r[k].code, max) << bits << " saturates";
+    // Geometric values saturate one below the largest code, which is kept for another surface
+    // (a background centre, another material) and decodes as 4 at every width, above any
+    // saturated geometry.
+    EXPECT_EQ(r[0].code_max, max) << bits;
+    EXPECT_EQ(r[0].decoded_max, 4.0f) << bits;
+    for (int k : {5, 6}) EXPECT_EQ(r[k].code, max - 1) << bits << " saturates below the largest code";
     EXPECT_EQ(r[7].code, 1u) << "NaN encodes as similar";
     EXPECT_EQ(r[8].code, 1u) << "negative clamps to 0";
     if (bits == 8) {
-      EXPECT_EQ(r[4].code, max) << "8 bits saturate at 254/128 = 1.98";
+      EXPECT_EQ(r[4].code, max - 1) << "8 bits saturate at 253/128 = 1.98";
+      EXPECT_NEAR(r[4].decoded, 253.0 / 128.0, 1e-6);
     }
+    // Whatever a similarity measure gives (SADP and sadp-plane lie in [0, 2]) stays below
+    // another surface's code.
+    for (int k : {0, 1, 2, 3, 4}) EXPECT_LT(r[k].decoded, r[k].decoded_max) << bits << " value " << values[k];
     for (const auto& x : r) EXPECT_TRUE(std::isfinite(x.decoded));
   }
 }
@@ -215,6 +226,9 @@ TEST_F(GlslExtremes, DepthCodesStayDistinctAboveTwoPercent) {
       }
       // Decoded within the code's resolution: 1/16 of an octave of (1 + v / 0.05%) at 8 bits.
       EXPECT_NEAR(r[i].decoded, percents[i], 0.05f * (percents[i] + 0.05f)) << bits << " bits";
+      // Below the saturation and below another surface (the largest code, rsaa_decode_similarity).
+      EXPECT_LT(r[i].code, r[i].code_max - 1) << bits << " bits, " << percents[i] << "%";
+      EXPECT_GT(r[i].decoded_max, 1e3f * r[i].decoded) << bits << " bits";
     }
   }
 }
