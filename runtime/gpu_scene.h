@@ -33,6 +33,7 @@ class GpuScene {
 
   glm::vec3 background() const { return background_; }
   std::size_t triangle_count() const { return triangles_; }
+  bool has_facet_colours() const { return has_facet_colours_; }
 
  private:
   gl::VertexArray vao_;

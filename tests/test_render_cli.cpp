@@ -244,11 +244,14 @@ TEST(ViewCli, SwitchesTechniquesAndTakesScreenshotsUnderXvfb) {
     EXPECT_EQ(nlohmann::json::parse(c.output).at("identical"), true) << shot;
   }
   // Started on a technique without facet edges, then switched to rsaa's defaults (which draw with
-  // them): the scene is uploaded once, ready for every key.
+  // them): the scene is uploaded again with its facets on the switch, not before.
   const auto from_noaa = test::run_command("xvfb-run -a -s '-screen 0 640x480x24' " + std::string(RSAA_BINARY) +
                                            " view --technique noaa" + size + "--keys '6PQ' --screenshot " +
                                            dir.file("from-noaa-%d.png"));
   ASSERT_EQ(from_noaa.exit_code, 0) << from_noaa.output;
+  const std::size_t facets = from_noaa.output.find("finding the scene's facets");
+  ASSERT_NE(facets, std::string::npos) << from_noaa.output;
+  EXPECT_GT(facets, from_noaa.output.find("showing noaa")) << from_noaa.output;
   ASSERT_EQ(run_rsaa("render --technique rsaa --samples 8" + size + "--out " + dir.file("headless.png")).exit_code, 0);
   const auto c = run_rsaa("compare --json " + dir.file("from-noaa-1.png") + " " + dir.file("headless.png"));
   ASSERT_EQ(c.exit_code, 0) << c.output;

@@ -17,6 +17,7 @@
 #include "runtime/render.h"
 #include "runtime/scene.h"
 #include "runtime/scene_renderer.h"
+#include "runtime/technique_registry.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/options.h"
 #include "tools/cli/technique_options.h"
@@ -63,11 +64,13 @@ const char* kHelp =
 
 class Viewer {
  public:
-  // The scene is uploaded once, with the facet colours: a key can switch to rsaa's defaults
-  // (which draw with facet edges) from any technique.
+  // The scene is uploaded with the facet colours only once a technique needs them (rsaa's
+  // defaults draw with facet edges; finding the facets takes seconds on millions of triangles):
+  // again, with them, on the first switch to such a technique.
   Viewer(const ViewArgs& args, GLFWwindow* window, const Scene& scene, const Camera& camera)
-      : args_(args), window_(window), gpu_scene_(scene, /*with_facet_colours=*/true), camera_(camera), options_(args.technique),
-        output_(gl::make_texture_2d(GL_RGBA16F, args.width, args.height)),
+      : args_(args), window_(window), scene_(scene),
+        gpu_scene_(std::make_unique<GpuScene>(scene, needs_facet_colours(args.technique))), camera_(camera),
+        options_(args.technique), output_(gl::make_texture_2d(GL_RGBA16F, args.width, args.height)),
         present_(make_fullscreen_program("present.frag", "")) {
     rebuild();
   }
@@ -101,7 +104,7 @@ class Viewer {
   }
 
   void draw() {
-    technique_->render(gpu_scene_, make_view(camera_, args_.width, args_.height), output_.get());
+    technique_->render(*gpu_scene_, make_view(camera_, args_.width, args_.height), output_.get());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, args_.width, args_.height);
     glUseProgram(present_.get());
@@ -133,6 +136,10 @@ class Viewer {
 
  private:
   void rebuild() {
+    if (needs_facet_colours(options_) && !gpu_scene_->has_facet_colours()) {
+      std::printf("finding the scene's facets for facet edges\n");
+      gpu_scene_ = std::make_unique<GpuScene>(scene_, /*with_facet_colours=*/true);
+    }
     technique_ = make_technique(options_, args_.width, args_.height);
     const std::string title = "rsaa view: " + technique_label(options_);
     glfwSetWindowTitle(window_, title.c_str());
@@ -142,7 +149,8 @@ class Viewer {
 
   const ViewArgs& args_;
   GLFWwindow* window_;
-  GpuScene gpu_scene_;
+  const Scene& scene_;
+  std::unique_ptr<GpuScene> gpu_scene_;
   Camera camera_;
   TechniqueOptions options_;
   std::unique_ptr<Technique> technique_;
