@@ -212,6 +212,8 @@ goals_steps() {
     $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
     $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
     >"$out/cell-patterns.md"
+  step "cell patterns: the README's summary (from cell-patterns.md)" cell-patterns-summary.md
+  bash tools/cell_patterns_summary.sh "$out/cell-patterns/cell-patterns.md" >"$out/cell-patterns-summary.md"
   step "cell patterns on 13 more held-out models and mrfixit" cell-patterns-more.md
   bash tools/cell_patterns.sh --out-dir "$out/cell-patterns-more" "${more_models[@]}" $models/IQM/mrfixit.iqm \
     >"$out/cell-patterns-more.md"
@@ -283,6 +285,7 @@ if [[ $quick == 1 ]]; then
   step "cell patterns, default scene at 160x120 (10^4 cases)" cell-patterns.md
   bash tools/cell_patterns.sh --width 160 --height 120 --cases 10000 --out-dir "$out/cell-patterns" builtin:default \
     >"$out/cell-patterns.md"
+  bash tools/cell_patterns_summary.sh "$out/cell-patterns/cell-patterns.md" >"$out/cell-patterns-summary.md"
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   step "bench --growth --quick" growth.md
