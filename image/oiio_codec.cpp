@@ -75,6 +75,16 @@ DecodedImage decode(const std::string& name, const std::string& bytes, const Ima
                              std::to_string(budget.max_side) + " per side and " +
                              std::to_string(budget.max_pixels) + " pixels");
   if (spec.depth > 1) throw std::runtime_error(name + ": volume images are not read");
+  // Pixels are read as a width x height grid from the top-left: a data window moved off the
+  // origin, or a display window other than it (EXR), would be compared and resampled shifted.
+  if (spec.x != 0 || spec.y != 0 || spec.full_x != 0 || spec.full_y != 0 || spec.full_width != spec.width ||
+      spec.full_height != spec.height)
+    throw std::runtime_error(name + ": its data window (" + std::to_string(spec.width) + "x" +
+                             std::to_string(spec.height) + " at " + std::to_string(spec.x) + "," +
+                             std::to_string(spec.y) + ") is not its display window (" +
+                             std::to_string(spec.full_width) + "x" + std::to_string(spec.full_height) + " at " +
+                             std::to_string(spec.full_x) + "," + std::to_string(spec.full_y) +
+                             "); only images whose pixels fill the display window from 0,0 are read");
   const Layout layout = layout_of(name, spec);
 
   DecodedImage d;

@@ -370,7 +370,7 @@ void check_frameable(const Scene& scene, const std::string& what) {
 }
 
 Scene scaled_scene(Scene scene, float factor) {
-  if (!(factor > 0.0f) || !std::isfinite(factor)) throw std::invalid_argument("scene scale must be a finite number > 0");
+  if (!(factor > 0.0f) || !std::isfinite(factor)) throw std::invalid_argument("scene scale must be a finite number > 0 that a float holds (1.2e-38 to 3.4e+38)");
   if (factor == 1.0f) return scene;
   for (SceneVertex& v : scene.vertices) v.position *= factor;
   if (scene.camera) {

@@ -498,7 +498,11 @@ TEST(PlotCsv, ExtremeButFiniteValuesAreDrawnOrRefused) {
   EXPECT_GT(red_pixels(dir.file("big.png")), 300);
   for (const auto& [csv, message] : std::vector<std::pair<std::string, std::string>>{
            {"x,y\n1,-1.7e308\n2,1.7e308\n", "span more than can be drawn (y from -1.7e+308 to 1.7e+308)"},
-           {"x,y\n1,1.75e308\n2,1.75e308\n", "span more than can be drawn (y is 1.75e+308)"}}) {
+           {"x,y\n1,1.75e308\n2,1.75e308\n", "span more than can be drawn (y is 1.75e+308)"},
+           // x values a chart cannot tell apart were drawn at one x, their labels over each other.
+           {"x,y\n1e-320,1\n2e-320,2\n", "too narrow a span to tell the points apart on the x axis"},
+           // A name the header repeats: which column was drawn was the first's, silently.
+           {"x,y,x\n1,2,3\n2,3,4\n", "column 'x' appears more than once in the header"}}) {
     test::write_text(dir.file("huge.csv"), csv);
     try {
       bench::plot_csv(dir.file("huge.csv"), "x", {"y"}, false, "t", dir.file("huge.png"));

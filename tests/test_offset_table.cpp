@@ -79,6 +79,13 @@ TEST(OffsetTableJson, RejectsBrokenFiles) {
   expect_rejected(edited("[-0.125, -0.375]", "[-0.125, -0.4]"), "does not match the built-in");
   expect_rejected(edited("[-0.125, -0.375], ", ""), "pattern d3d4x has 4 samples");
   expect_rejected(edited("\"training\": {", "\"training\": 3, \"x\": {"), "training: expected an object");
+  // A repeated key is refused wherever it stands (nlohmann would keep the last one silently);
+  // one key in two objects is fine.
+  expect_rejected(edited("\"format\": \"rsaa-offset-table\",", "\"pattern\": \"gl4x\", \"format\": \"rsaa-offset-table\","),
+                  "the key \"pattern\" appears twice in one object");
+  expect_rejected(edited("\"training\": {", "\"training\": {\"a\": 1, \"a\": 2, "), "the key \"a\" appears twice");
+  EXPECT_NO_THROW(parse_offset_table(edited("\"training\": {", "\"training\": {\"x\": {\"a\": 1}, \"y\": {\"a\": 2}, "),
+                                     "twice.json"));
   // Nested 100,000 deep (eval-table --json echoed it in quadratic space) or very many values.
   const std::size_t depth = 100000;
   expect_rejected(edited("\"training\": {", "\"training\": {\"x\": " + std::string(depth, '[') +

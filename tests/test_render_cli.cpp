@@ -208,7 +208,17 @@ TEST(CompareCli, RejectsMissingAndMismatchedImages) {
   ASSERT_EQ(run_rsaa("render --width 16 --height 8 --out " + dir.file("b.png")).exit_code, 0);
   auto r = run_rsaa("compare " + dir.file("a.png") + " " + dir.file("b.png"));
   EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.output.find("differ in size"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(dir.file("a.png") + " is 16x16, " + dir.file("b.png") + " 16x8"), std::string::npos)
+      << r.output;
+  // An EXR whose data window is moved off the origin, or smaller than its display window: read
+  // as a grid from 0,0 it would compare shifted, so it is refused, named.
+  ASSERT_EQ(run_rsaa("render --width 16 --height 16 --out " + dir.file("a.exr")).exit_code, 0);
+  for (const char* window : {"--origin +5+5", "--fullsize 20x20"}) {
+    ASSERT_EQ(test::run_command("oiiotool " + dir.file("a.exr") + " " + window + " -o " + dir.file("w.exr")).exit_code, 0);
+    r = run_rsaa("compare " + dir.file("w.exr") + " " + dir.file("a.exr"));
+    EXPECT_NE(r.exit_code, 0) << window;
+    EXPECT_NE(r.output.find(dir.file("w.exr") + ": its data window"), std::string::npos) << window << r.output;
+  }
   r = run_rsaa("compare " + dir.file("a.png") + " " + dir.file("missing.png"));
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("missing.png"), std::string::npos) << r.output;

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/util/atomic_file.h"
+#include "core/util/json_unique.h"
 #include "core/rsaa/conventions.h"
 #include "core/rsaa/fallback.h"
 
@@ -169,9 +170,11 @@ OffsetTable parse_table(const std::string& text, const std::string& origin, std:
   const Reader reader(origin);
   json root;
   try {
-    root = json::parse(text);
+    root = parse_json_with_unique_keys(text);
   } catch (const json::exception& e) {
     throw TableError(origin + ": not valid JSON (" + e.what() + ")");
+  } catch (const std::invalid_argument& e) {
+    throw TableError(origin + ": " + e.what());
   }
   if (!root.is_object()) reader.fail("top level", "expected a JSON object");
   if (reader.string_field(root, "format") != "rsaa-offset-table")

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/util/atomic_file.h"
+#include "core/util/json_unique.h"
 #include "image/image_io.h"
 #include "image/image_metrics.h"
 #include "runtime/render.h"
@@ -369,7 +370,7 @@ double measured(const nlohmann::json& entry, const char* field, double lo, doubl
 std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOptions& o) {
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(read_whole_file(path));
+    j = parse_json_with_unique_keys(read_whole_file(path));
     if (j.at("format") != "rsaa-bench") throw std::runtime_error("not an rsaa-bench file");
     o.width = j.at("width");
     o.height = j.at("height");

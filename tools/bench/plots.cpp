@@ -321,6 +321,8 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
   const auto column = [&](const std::string& name) {
     const auto it = std::find(table.header.begin(), table.header.end(), name);
     if (it == table.header.end()) throw std::runtime_error(csv_path + ": no column '" + name + "'");
+    if (std::count(table.header.begin(), table.header.end(), name) > 1)
+      throw std::runtime_error(csv_path + ": column '" + name + "' appears more than once in the header: which is meant?");
     return std::size_t(it - table.header.begin());
   };
   const std::size_t xc = column(x_column);
@@ -339,6 +341,14 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
   double y_lo = std::numeric_limits<double>::infinity(), y_hi = -y_lo;
   for (const auto& s : ys)
     for (double v : s) y_lo = std::min(y_lo, v), y_hi = std::max(y_hi, v);
+  // x values that differ by less than the axis tells apart (1e-320 and 2e-320) would be drawn at
+  // one x with their labels over each other; equal values are fine.
+  if (x_lo != x_hi && !(x_hi - x_lo > 1e-12 * std::max({1.0, std::abs(x_lo), std::abs(x_hi)}))) {
+    char values[96];
+    std::snprintf(values, sizeof values, "from %g to %g", x_lo, x_hi);
+    throw std::runtime_error(csv_path + ": column '" + x_column + "' runs " + values +
+                             ", too narrow a span to tell the points apart on the x axis (rescale the column)");
+  }
   // A span beyond a double (1e308 and -1e308) would put every point at NaN: nothing drawn.
   try {
     const AxisRange x = drawable_range(x_lo, x_hi, 0.0, "x"), y = drawable_range(y_lo, y_hi, 0.08, "y");

@@ -25,6 +25,10 @@ int run_compare(const CompareArgs& a) {
     throw std::invalid_argument("--luma-threshold must be within (0, 1)");
   const DisplayImage image = read_display_image(a.image);
   const DisplayImage reference = read_display_image(a.reference);
+  if (image.width != reference.width || image.height != reference.height)
+    throw std::invalid_argument(a.image + " is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                ", " + a.reference + " " + std::to_string(reference.width) + "x" +
+                                std::to_string(reference.height) + ": images of one size are compared");
   const ImageComparison c = compare_images(image, reference, a.luma_threshold);
   // NaN or infinite pixels make every figure undefined: refused, never reported as a number.
   if (!c.defined()) {

@@ -68,7 +68,7 @@ Action add_render_command(CLI::App& app) {
                   "scene's view, or framing the model's bounds)");
   cmd->add_option("--scene-scale", args->scene_scale, "Multiply the scene's positions and camera by this (units test)");
   add_anisotropy_option(cmd, args->anisotropy);
-  cmd->add_option("--out", args->out, "Output image (PNG: 8-bit sRGB; EXR: linear)")->required();
+  cmd->add_option("--out", args->out, "Output image by its extension: PNG (8-bit sRGB) or EXR (linear) for measuring; other formats OpenImageIO writes (TIFF, HDR: linear; JPEG: lossy, not for measuring) also work")->required();
   return [args, cmd] {
     validate(args->technique);
     refuse_options_of_other_techniques(*cmd, args->technique.technique);
