@@ -268,6 +268,22 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
     dir.write("escape.json", t.replace(t.find("\"custom-p\""), 10, "\"custom-../../x\""));
   }
   dir.write("span.csv", "x,y\n0,1e308\n1,-1e308\n");
+  // x values a chart cannot tell apart (their labels were drawn over each other) and a header that
+  // names one column twice (the first was drawn, silently).
+  dir.write("narrow.csv", "x,y\n1e-320,1\n2e-320,2\n");
+  dir.write("twice.csv", "x,y,x\n1,2,3\n2,3,4\n");
+  {
+    // A table naming its pattern twice (nlohmann kept the last one without a word), and an EXR
+    // whose data window is moved off the display window's origin (compared as if unshifted).
+    std::string t = read_whole_file(f("a/custom-p.json"));
+    dir.write("twice.json", "{\"pattern\": \"d3d4x\", " + t.substr(t.find('{') + 1));
+    auto out = OIIO::ImageOutput::create(f("shifted.exr"));
+    OIIO::ImageSpec spec(8, 8, 3, OIIO::TypeDesc::FLOAT);
+    spec.x = spec.y = 5;
+    std::vector<float> black(8 * 8 * 3, 0.0f);
+    if (!out || !out->open(f("shifted.exr"), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, black.data()) || !out->close())
+      throw std::runtime_error(f("shifted.exr") + ": cannot write test image");
+  }
   dir.write("bench.csv", "scene,technique,frame_ms,psnr_db,passes_wall_ms\n"
                          "\"builtin:default\",\"rsaa 8x, sadp\",1.5,30,\"scene=1;post=0.5\"\n"
                          "\"a \"\"quoted\"\" scene\",\"noaa\",0.5,25,\"scene=0.4\"\n");
@@ -492,7 +508,7 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
     return output.find("\"identical\": true") != std::string::npos ? "" : "not equal to its composite: " + output;
   };
   suites.push_back(run_class(
-      "hostile 6, silently wrong: NaN/Inf images, alpha, mixed patterns, degenerate positions, extreme scales and cameras, unplottable spans",
+      "hostile 6, silently wrong: NaN/Inf images, alpha, shifted data windows, mixed patterns, repeated keys, degenerate positions, extreme scales and cameras, unplottable spans, repeated columns",
       {
           refuse("all-NaN EXR against black", {"compare", f("nan.exr"), f("black.exr")}, "NaN or infinite"),
           refuse("black against all-Inf EXR", {"compare", f("black.exr"), f("inf.exr")}, "inf.exr"),
@@ -506,6 +522,10 @@ std::vector<SuiteResult> hostile_suites(const Options& options) {
           refuse("render --scene-scale 1e30 (only the background)", {"render", "--scene", "builtin:default", "--scene-scale", "1e30", "--out", f("out-12s.png")}, "scaled by 1e+30", f("out-12s.png")),
           refuse("render --camera at 3e38 (only the background)", {"render", "--scene", "builtin:default", "--camera", "3e38,0,0,0,0,0", "--out", f("out-12c.png")}, "--camera", f("out-12c.png")),
           refuse("plot of values from 1e308 to -1e308 (nothing drawn)", {"plot", f("span.csv"), "--x", "x", "--y", "y", "--out", f("out-12p.png")}, "span.csv", f("out-12p.png")),
+          refuse("plot of x values 1e-320 apart (drawn at one x)", {"plot", f("narrow.csv"), "--x", "x", "--y", "y", "--out", f("out-12n.png")}, "narrow.csv", f("out-12n.png")),
+          refuse("plot of a column the header names twice", {"plot", f("twice.csv"), "--x", "x", "--y", "y", "--out", f("out-12t.png")}, "twice.csv", f("out-12t.png")),
+          refuse("table naming its pattern twice (the last won)", {"eval-table", "--cases", "100", f("twice.json")}, "twice.json"),
+          refuse("EXR whose data window is off its display window (compared unshifted)", {"compare", f("shifted.exr"), f("black.exr")}, "shifted.exr"),
       },
       options));
 
