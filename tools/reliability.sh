@@ -77,7 +77,11 @@ input gave the right result. What each class feeds:
    a subnormal coordinate or coinciding (refused); models at 1e30 and 1e-30 scale and a unit
    model 10^6 from the origin, \`--scene-scale 1e30\` and \`--camera 3e38,...\` (refused: outside
    the range that renders correctly in float; they rendered only the background); a CSV whose
-   values span 1e308 to -1e308 (refused by \`plot\`: nothing was drawn).
+   values span 1e308 to -1e308 (refused by \`plot\`: nothing was drawn); since session 27 (an
+   adversarial session's findings) x values 1e-320 apart (drawn at one x, labels over each other)
+   and a header naming the plotted column twice (the first was drawn) refused by \`plot\`, a table
+   naming its pattern twice (the last was read, silently) and an EXR whose data window is moved
+   off its display window (\`compare\` called it identical to the unshifted image) refused, named.
 7. **The command line**: \`--seed -1\`, \`--cases -1\`, \`--seed 2^64\`, \`--threads 100000\`,
    \`--two-line-weight nan\`, \`--threshold -1\`, \`--luma-threshold nan\` (refused as typed, no
    clamping or wrap-around); mistyped subcommands (refused naming the nearest one); a CSV with
