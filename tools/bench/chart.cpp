@@ -66,13 +66,17 @@ struct Range {
 
 }  // namespace
 
+bool drawn_as_one_value(double lo, double hi) {
+  // Spans below 1e-12 of the magnitude (a few thousand float steps of a double) are drawn as one
+  // value: ticks a fifth of the span apart must still be distinct doubles.
+  return !(hi - lo > 1e-12 * std::max({1.0, std::abs(lo), std::abs(hi)}));
+}
+
 AxisRange drawable_range(double lo, double hi, double fraction, const std::string& what) {
   if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi)) return {};
   const double magnitude = std::max({1.0, std::abs(lo), std::abs(hi)});
   const double span = hi - lo;
-  // Spans below 1e-12 of the magnitude (a few thousand float steps of a double) are drawn as one
-  // value: ticks a fifth of the span apart must still be distinct doubles.
-  const double pad = span > 1e-12 * magnitude ? fraction * span : std::max(fraction, 0.05) * magnitude;
+  const double pad = drawn_as_one_value(lo, hi) ? std::max(fraction, 0.05) * magnitude : fraction * span;
   const AxisRange r{lo - pad, hi + pad};
   if (!std::isfinite(r.lo) || !std::isfinite(r.hi) || !std::isfinite(r.hi - r.lo)) {
     char values[128];

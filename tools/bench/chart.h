@@ -25,6 +25,9 @@ struct AxisRange {
   double lo = 0.0, hi = 1.0;
 };
 AxisRange drawable_range(double lo, double hi, double fraction, const std::string& what);
+// Whether values from lo to hi are drawn as one value (a span below 1e-12 of their magnitude, at
+// least 1): drawable_range's rule, for a caller that must tell distinct points apart.
+bool drawn_as_one_value(double lo, double hi);
 
 struct FigureTable {
   std::vector<std::string> columns;        // the first is the x axis (or the bar categories)

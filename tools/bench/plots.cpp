@@ -343,7 +343,7 @@ void plot_csv(const std::string& csv_path, const std::string& x_column, const st
     for (double v : s) y_lo = std::min(y_lo, v), y_hi = std::max(y_hi, v);
   // x values that differ by less than the axis tells apart (1e-320 and 2e-320) would be drawn at
   // one x with their labels over each other; equal values are fine.
-  if (x_lo != x_hi && !(x_hi - x_lo > 1e-12 * std::max({1.0, std::abs(x_lo), std::abs(x_hi)}))) {
+  if (x_lo != x_hi && drawn_as_one_value(x_lo, x_hi)) {
     char values[96];
     std::snprintf(values, sizeof values, "from %g to %g", x_lo, x_hi);
     throw std::runtime_error(csv_path + ": column '" + x_column + "' runs " + values +
