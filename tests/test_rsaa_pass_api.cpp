@@ -1557,5 +1557,47 @@ TEST_F(RsaaPassApi, TheRecordPassesCodesDoNotDependOnHowTheyReadTheRecords) {
   gl::check("record passes");
 }
 
+
+// An engine's draw may leave the state the pass drew with changed (a scissor, no depth or colour
+// writes): the pass sets its own again before every clear and draw of the next subsample, so the
+// codes are those of a callback that changed nothing, on every pre-pass (the jittered draws, the
+// draws writing records, the multisample draw, the union pattern's two).
+TEST_F(RsaaPassApi, ACallbackLeavingScissorAndMasksDoesNotReachTheNextDraw) {
+  constexpr int width = 96, height = 72;
+  const test::SceneFrame scene("builtin:default", width, height, true);
+  const auto union_table = std::make_shared<const OffsetTable>(
+      read_offset_table(std::string(RSAA_SOURCE_DIR) + "/tables/custom-gl4x-union.json"));
+  for (const char* pre_pass : {"jittered", "records", "gl4x", "union"}) {
+    RsaaSettings settings;
+    settings.material_edges = true;
+    settings.prepass = pre_pass;
+    if (std::string(pre_pass) == "gl4x") settings.pattern = "gl4x", settings.prepass = "msaa";
+    if (std::string(pre_pass) == "union") settings.table = union_table, settings.pattern = "", settings.prepass = "msaa";
+    SCOPED_TRACE(pre_pass);
+    RsaaPass pass(settings, width, height);
+    scene.render_subsamples(pass);
+    const std::vector<std::uint8_t> expected = read_back_codes(pass, width, height);
+    // A frame drawn shifted first, so that targets a masked clear left alone would show.
+    pass.render_subsamples(scene.frame(), [&](unsigned program, glm::vec2 jitter) {
+      SceneRenderer::draw_in_current_viewport(scene.gpu, scene.view, jitter + glm::vec2(0.2f, 0.1f), program);
+    });
+    pass.render_subsamples(scene.frame(), [&](unsigned program, glm::vec2 jitter) {
+      SceneRenderer::draw_in_current_viewport(scene.gpu, scene.view, jitter, program);
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(0, 0, 1, 1);
+      glDepthMask(GL_FALSE);
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    });
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const std::vector<std::uint8_t> codes = read_back_codes(pass, width, height);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < codes.size(); ++i) differing += codes[i] != expected[i];
+    EXPECT_EQ(differing, 0u) << "of " << codes.size() << " codes";
+  }
+  gl::check("callbacks leaving state");
+}
+
 }  // namespace
 }  // namespace rsaa
