@@ -96,11 +96,14 @@ float rsaa_similarity(vec3 p1, vec3 n1, vec3 p2, vec3 n2) {
 }
 
 // ---- similarity codes: 0 = no surface at the subsample, 1 + round-down(value * scale) else,
-// saturating one below the largest code (the paper's dbits compression). The largest code,
-// RSAA_CODE_MAX, is kept for a subsample on another surface than any geometric measure can say
-// (a surface over a background centre, another material) and decodes as the stored value 4 at
-// every width: saturated geometry (1.98 at 8 and 16 bits) and another material must not tie, or
-// the k-means split weighs "another facet" like a merely large geometric difference.
+// saturating below the codes kept for another surface than any geometric measure can say (the
+// paper's dbits compression). The largest code, RSAA_CODE_MAX, is a surface over a background
+// centre or another material than the centre's that the outside pixel in the subsample's
+// direction shows; with material edges the one below it, RSAA_CODE_UNSEEN_MATERIAL, another
+// material that this outside pixel does not show (the post-process's fetch check then knows the
+// fetch cannot bring it in). Both decode as the stored value 4 at every width: saturated geometry
+// (1.97 at 8 and 16 bits) and another material must not tie, or the k-means split weighs
+// "another facet" like a merely large geometric difference.
 #ifndef RSAA_CODE_BITS
 #define RSAA_CODE_BITS 8
 #endif
@@ -110,6 +113,12 @@ const uint RSAA_CODE_MAX = 0xffffffffu;
 #else
 const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
 const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
+#endif
+#ifdef RSAA_MATERIAL_EDGES
+const uint RSAA_CODE_UNSEEN_MATERIAL = RSAA_CODE_MAX - 1u;
+const uint RSAA_CODE_GEOMETRY_MAX = RSAA_CODE_MAX - 2u;  // the largest geometric code
+#else
+const uint RSAA_CODE_GEOMETRY_MAX = RSAA_CODE_MAX - 1u;
 #endif
 
 // The code textures of RSAA_SAMPLE_COUNT subsamples, four a texel, and their format as images.
@@ -140,14 +149,14 @@ float rsaa_similarity_of_code_value(float stored) { return stored; }
 uint rsaa_encode_similarity(float value) {
   if (isnan(value)) return 1u;
   float scaled = rsaa_code_value(clamp(value, 0.0, 4.0e9)) * RSAA_CODE_SCALE;
-  return scaled >= float(RSAA_CODE_MAX - 2u) ? RSAA_CODE_MAX - 1u : uint(scaled) + 1u;
+  return scaled >= float(RSAA_CODE_GEOMETRY_MAX - 1u) ? RSAA_CODE_GEOMETRY_MAX : uint(scaled) + 1u;
 }
 
 // A subsample with no surface compares as equal to a background centre and as maximally
 // different from a surface centre.
 float rsaa_decode_similarity(uint code, bool centre_is_surface) {
   if (code == 0u) return centre_is_surface ? 1.0e9 : 0.0;
-  if (code == RSAA_CODE_MAX) return rsaa_similarity_of_code_value(4.0);
+  if (code > RSAA_CODE_GEOMETRY_MAX) return rsaa_similarity_of_code_value(4.0);
   return rsaa_similarity_of_code_value(float(code - 1u) / RSAA_CODE_SCALE);
 }
 

@@ -115,6 +115,7 @@ float rsaa_centres_similarity(uint a_material, vec3 a_position, vec3 a_normal, u
 // read and compared it on its own, and a driver that runs both sides of every branch for a
 // whole SIMD batch (llvmpipe) paid for all of them on every edge pixel.
 struct RsaaOutside {
+  uint centre_material;                // rsaa_post_material() of the pixel itself
   ivec2 pixel[RSAA_SAMPLE_COUNT];
   uvec2 normal[RSAA_SAMPLE_COUNT];     // encoded: (0, 0) is the background
   vec3 position[RSAA_SAMPLE_COUNT];    // view space
@@ -127,6 +128,7 @@ RsaaOutside rsaa_outside_pixels(ivec2 pixel, vec3 position, vec3 normal) {
   RsaaOutside o;
   ivec2 last = ivec2(rsaa_viewport) - 1;
   uint material = rsaa_post_material(pixel);
+  o.centre_material = material;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     o.pixel[i] = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
     o.normal[i] = texelFetch(rsaa_post_centre_normal, o.pixel[i], 0).xy;
@@ -162,10 +164,16 @@ uint rsaa_split_check(uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], 
 // the outside pixels; it helps only where they show what the dissimilar subsamples saw. A
 // dissimilar subsample is matched when the outside pixel in its direction shows a surface about as
 // different from the centre (within a factor 3; the background for a background subsample, any
-// surface for a subsample of a background pixel). When no dissimilar subsample is matched (a
-// sliver whose surface no neighbour centre shows: thin side faces, a contour line beside another
-// surface), the offset is halved. Returns the factor for the offset, 1 or 0.5.
-float rsaa_fetch_check(uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask, RsaaOutside o) {
+// surface for a subsample of a background pixel). With material edges the materials decide
+// first: a subsample on another material is matched exactly when that pixel shows its material
+// (the pre-pass's code says which, `other_material`: rsaa_pixel_mask()), and a subsample on the
+// centre's material is not matched by a pixel of another material (facets of one mesh are
+// materials of their own: two facets are not "about as different" for both being other facets).
+// When no dissimilar subsample is matched (a sliver whose surface no neighbour centre shows: thin
+// side faces, a contour line beside another surface), the offset is halved. Returns the factor
+// for the offset, 1 or 0.5.
+float rsaa_fetch_check(uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask, uvec2 other_material,
+                       RsaaOutside o) {
   bool centre_is_surface = rsaa_is_surface(centre_normal);
   bool matched = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
@@ -175,6 +183,12 @@ float rsaa_fetch_check(uvec2 centre_normal, float similarity[RSAA_SAMPLE_COUNT],
     // s is 1e9 for a subsample that sees no surface (rsaa_decode_similarity).
     if (!centre_is_surface || s >= 1.0e9 || !q_is_surface)
       matched = matched || (centre_is_surface ? s >= 1.0e9 && !q_is_surface : q_is_surface);
+#ifdef RSAA_MATERIAL_EDGES
+    else if (((other_material.x | other_material.y) & (1u << i)) != 0u)
+      matched = matched || (other_material.x & (1u << i)) != 0u;
+    else if (o.material[i] != o.centre_material)
+      continue;
+#endif
     else
       matched = matched || (t * 3.0 > s && t < s * 3.0);
   }
@@ -262,18 +276,27 @@ void rsaa_pixel_codes(ivec2 pixel, out uint codes[RSAA_SAMPLE_COUNT]) {
 }
 
 // The pixel's similarity mask (paper section 2.2) from its subsamples' codes, with the decoded
-// similarities and the centre's normal that the resolve reads further. The all-similar mask means
+// similarities, the centre's normal and (material edges) the subsamples on another material,
+// bits of other_material.x where their outside pixel shows it, .y where not, that the resolve
+// reads further. The all-similar mask means
 // rsaa_resolve() keeps the pixel's colour. Most pixels leave early: every subsample on the
 // centre's surface (code 1 = similarity 0), or a background pixel whose subsamples see no surface
 // (code 0) or its surface.
-uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out uvec2 centre_normal) {
+uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out uvec2 centre_normal,
+                     out uvec2 other_material) {
   uint codes[RSAA_SAMPLE_COUNT];
   rsaa_pixel_codes(pixel, codes);
   bool any_different = false, any_uncovered = false;
+  other_material = uvec2(0u);
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     any_different = any_different || codes[i] > 1u;
     any_uncovered = any_uncovered || codes[i] == 0u;
     similarity[i] = 0.0;
+#ifdef RSAA_MATERIAL_EDGES
+    // (RSAA_CODE_MAX over a background centre is no material's; the fetch check tells them apart.)
+    if (codes[i] == RSAA_CODE_MAX) other_material.x |= 1u << i;
+    if (codes[i] == RSAA_CODE_UNSEEN_MATERIAL) other_material.y |= 1u << i;
+#endif
   }
   centre_normal = uvec2(0u);
   if (!any_different && !any_uncovered) return RSAA_ALL_SIMILAR;
@@ -283,6 +306,11 @@ uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out u
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) similarity[i] = rsaa_decode_similarity(codes[i], centre_is_surface);
   float split;
   return rsaa_classify(similarity, rsaa_threshold, split);
+}
+
+uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out uvec2 centre_normal) {
+  uvec2 other_material;
+  return rsaa_pixel_mask(pixel, similarity, centre_normal, other_material);
 }
 
 // Whether rsaa_resolve() does more than keep the pixel's colour: the test the edge pass runs on
@@ -303,8 +331,8 @@ bool rsaa_pixel_has_edge(ivec2 pixel) {
 
 vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   float similarity[RSAA_SAMPLE_COUNT];
-  uvec2 centre_normal;
-  mask = rsaa_pixel_mask(pixel, similarity, centre_normal);
+  uvec2 centre_normal, other_material;
+  mask = rsaa_pixel_mask(pixel, similarity, centre_normal, other_material);
   vec4 colour = texelFetch(rsaa_colour, pixel, 0);
   if (mask == RSAA_ALL_SIMILAR) return colour;
   bool centre_is_surface = rsaa_is_surface(centre_normal);
@@ -318,7 +346,7 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   int representative;
   rsaa_table_entry(mask, offset, representative);
 #ifdef RSAA_FETCH_CHECK_NEIGHBOURS
-  offset *= rsaa_fetch_check(centre_normal, similarity, mask, o);
+  offset *= rsaa_fetch_check(centre_normal, similarity, mask, other_material, o);
 #endif
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.

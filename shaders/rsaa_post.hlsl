@@ -136,12 +136,18 @@ static const uint RSAA_CODE_MAX = 0xffffffffu;
 static const float RSAA_CODE_SCALE = float(1u << (RSAA_CODE_BITS - 1));
 static const uint RSAA_CODE_MAX = (1u << RSAA_CODE_BITS) - 1u;
 #endif
+#ifdef RSAA_MATERIAL_EDGES
+static const uint RSAA_CODE_UNSEEN_MATERIAL = RSAA_CODE_MAX - 1u;
+static const uint RSAA_CODE_GEOMETRY_MAX = RSAA_CODE_MAX - 2u;
+#else
+static const uint RSAA_CODE_GEOMETRY_MAX = RSAA_CODE_MAX - 1u;
+#endif
 
-// rsaa_common.glsl's rsaa_decode_similarity: the largest code (another surface than geometry
-// can say) decodes as the stored value 4 at every width.
+// rsaa_common.glsl's rsaa_decode_similarity: the codes above geometry's (another surface than
+// geometry can say) decode as the stored value 4 at every width.
 float RsaaDecodeSimilarity(uint code, bool centre_is_surface) {
   if (code == 0u) return centre_is_surface ? 1.0e9 : 0.0;
-  float stored = code == RSAA_CODE_MAX ? 4.0 : float(code - 1u) / RSAA_CODE_SCALE;
+  float stored = code > RSAA_CODE_GEOMETRY_MAX ? 4.0 : float(code - 1u) / RSAA_CODE_SCALE;
 #ifdef RSAA_SIMILARITY_DEPTH
   return 0.05 * (exp2(8.0 * stored) - 1.0);
 #else
@@ -180,6 +186,7 @@ int2 RsaaOutsideStep(float2 sample_position) {
 // rsaa_post.glsl's RsaaOutside: the outside pixel nearest each subsample, read and compared with
 // the centre once for every check.
 struct RsaaOutside {
+  uint centre_material;
   int2 pixel[RSAA_SAMPLE_COUNT];
   uint2 normal[RSAA_SAMPLE_COUNT];
   float3 position[RSAA_SAMPLE_COUNT];
@@ -190,6 +197,7 @@ struct RsaaOutside {
 RsaaOutside RsaaOutsidePixels(int2 pixel, float3 position, float3 normal) {
   RsaaOutside o;
   uint material = RsaaMaterial(pixel);
+  o.centre_material = material;
   [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     o.pixel[i] = clamp(pixel + RsaaOutsideStep(rsaa_sample_positions[i]), int2(0, 0), int2(rsaa_viewport) - 1);
     o.normal[i] = rsaa_centre_normal.Load(int3(o.pixel[i], 0));
@@ -214,8 +222,11 @@ bool RsaaSplitCheckDissimilar(uint2 centre_normal, int k, float s, RsaaOutside o
 
 #ifdef RSAA_FETCH_CHECK_NEIGHBOURS
 // rsaa_post.glsl's rsaa_fetch_check: 0.5 when no dissimilar subsample finds a like surface in the
-// outside pixel in its direction, else 1.
-float RsaaFetchCheck(uint2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask, RsaaOutside o) {
+// outside pixel in its direction, else 1; with material edges a subsample on another material is
+// matched exactly when its code says that pixel shows it (other_material.x, not .y), one on the
+// centre's material never by a pixel of another material.
+float RsaaFetchCheck(uint2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], uint mask, uint2 other_material,
+                     RsaaOutside o) {
   bool centre_is_surface = RsaaIsSurface(centre_normal);
   bool matched = false;
   [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
@@ -224,6 +235,12 @@ float RsaaFetchCheck(uint2 centre_normal, float similarity[RSAA_SAMPLE_COUNT], u
     float s = similarity[i], t = o.similarity[i];
     if (!centre_is_surface || s >= 1.0e9 || !q_is_surface)
       matched = matched || (centre_is_surface ? (s >= 1.0e9 && !q_is_surface) : q_is_surface);
+#ifdef RSAA_MATERIAL_EDGES
+    else if (((other_material.x | other_material.y) & (1u << i)) != 0u)
+      matched = matched || (other_material.x & (1u << i)) != 0u;
+    else if (o.material[i] != o.centre_material)
+      continue;
+#endif
     else
       matched = matched || (t * 3.0 > s && t < s * 3.0);
   }
@@ -282,10 +299,15 @@ bool RsaaMultiSurface(int2 pixel, uint2 centre_normal, float4 colour, uint mask,
 float4 RsaaResolve(int2 pixel) {
   uint codes[RSAA_SAMPLE_COUNT];
   bool any_different = false, any_uncovered = false;
+  uint2 other_material = uint2(0u, 0u);  // rsaa_pixel_mask's: another material shown outside, not shown
   [unroll] for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     codes[i] = rsaa_codes[i / 4].Load(int3(pixel, 0))[i % 4];
     any_different = any_different || codes[i] > 1u;
     any_uncovered = any_uncovered || codes[i] == 0u;
+#ifdef RSAA_MATERIAL_EDGES
+    if (codes[i] == RSAA_CODE_MAX) other_material.x |= 1u << i;
+    if (codes[i] == RSAA_CODE_UNSEEN_MATERIAL) other_material.y |= 1u << i;
+#endif
   }
   float4 colour = rsaa_colour.Load(int3(pixel, 0));
   if (!any_different && !any_uncovered) return colour;
@@ -322,7 +344,7 @@ float4 RsaaResolve(int2 pixel) {
   }
   float2 offset = rsaa_offsets[mask];
 #ifdef RSAA_FETCH_CHECK_NEIGHBOURS
-  offset *= RsaaFetchCheck(centre_normal, similarity, mask, o);
+  offset *= RsaaFetchCheck(centre_normal, similarity, mask, other_material, o);
 #endif
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.

@@ -74,6 +74,15 @@ vec3 rsaa_centre_position(ivec2 pixel) {
                             rsaa_inverse_projection, rsaa_viewport);
 }
 
+#ifdef RSAA_MATERIAL_EDGES
+// The material at the centre of the outside pixel nearest subsample `subsample` of `pixel`, the
+// one the post-process's checks read (rsaa_outside_pixels(): clamped to the image).
+uint rsaa_outside_material(ivec2 pixel, int subsample) {
+  ivec2 outside = clamp(pixel + rsaa_neighbours[subsample].xy, ivec2(0), ivec2(rsaa_viewport) - 1);
+  return texelFetch(rsaa_centre_primitive, outside, 0).y;
+}
+#endif
+
 // The compressed similarity code of subsample `subsample` of `pixel`: how different the surface
 // it sees (view-space position and geometric normal) is from the surface at the pixel centre.
 // `primitive` is the value the engine wrote into the centre primitive target for that triangle
@@ -96,7 +105,8 @@ uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 vi
   // A surface subsample in a background pixel: different.
   if (!rsaa_is_surface(centre_normal)) return RSAA_CODE_MAX;
 #ifdef RSAA_MATERIAL_EDGES
-  if (centre_primitive.y != material) return RSAA_CODE_MAX;
+  if (centre_primitive.y != material)
+    return rsaa_outside_material(pixel, subsample) == material ? RSAA_CODE_MAX : RSAA_CODE_UNSEEN_MATERIAL;
 #endif
   float similarity = rsaa_similarity(view_position, view_face_normal, rsaa_centre_position(pixel),
                                      rsaa_decode_normal(centre_normal));

@@ -138,7 +138,14 @@ uint rsaa_record_code(ivec2 pixel, int i, vec3 point, uvec2 record, uvec2 centre
 #ifdef RSAA_MATERIAL_EDGES
   primitive &= RSAA_RECORD_PRIMITIVE_BITS;
   if (primitive == (centre.x & RSAA_RECORD_PRIMITIVE_BITS)) primitive = centre.x;
-  material = (record.x >> RSAA_RECORD_MATERIAL_SHIFT) == (centre.y & RSAA_RECORD_MATERIAL_BITS) ? centre.y : ~centre.y;
+  // The stored bits stand for the centre's material, else the outside pixel's (the code tells
+  // whether that pixel shows it), else for themselves: a value unlike both.
+  uint stored = record.x >> RSAA_RECORD_MATERIAL_SHIFT;
+  if (stored == (centre.y & RSAA_RECORD_MATERIAL_BITS)) material = centre.y;
+  else {
+    uint outside = rsaa_outside_material(pixel, i);
+    material = stored == (outside & RSAA_RECORD_MATERIAL_BITS) ? outside : stored;
+  }
 #endif
   return rsaa_subsample_code(pixel, i, point, rsaa_record_normal(record), primitive, material);
 }

@@ -22,13 +22,16 @@ struct ProbeCase {
 struct ProbeResult {
   float sadp, depth_difference, decoded, plane_gap;
   std::uint32_t code, code_of_zero, code_max;
-  float decoded_max;  // rsaa_decode_similarity(RSAA_CODE_MAX): another surface than geometry says
+  float decoded_max;  // rsaa_decode_similarity(RSAA_PROBE_CODE): another surface than geometry says
 };
 
 // Evaluates the shared functions for each case with the given code bits.
 std::vector<ProbeResult> probe(const std::vector<ProbeCase>& cases, int code_bits,
                                const std::string& defines = "") {
   const std::string source = gl::shader_source("rsaa_common.glsl") + R"(
+#ifndef RSAA_PROBE_CODE
+#define RSAA_PROBE_CODE RSAA_CODE_MAX
+#endif
 layout(local_size_x = 1) in;
 struct Case { vec4 p1; vec4 n1; vec4 p2; vec4 n2; };
 struct Result { vec4 values; uvec4 codes; };
@@ -43,7 +46,7 @@ void main() {
                            rsaa_decode_similarity(code, true),
                            rsaa_plane_gap(c.p1.xyz, c.n1.xyz, c.p2.xyz, c.n2.xyz));
   results[i].codes = uvec4(code, rsaa_encode_similarity(0.0), RSAA_CODE_MAX,
-                           floatBitsToUint(rsaa_decode_similarity(RSAA_CODE_MAX, true)));
+                           floatBitsToUint(rsaa_decode_similarity(RSAA_PROBE_CODE, true)));
 })";
   const gl::Program program = gl::make_program(
       {{GL_COMPUTE_SHADER, source}}, "#define RSAA_CODE_BITS " + std::to_string(code_bits) + "\n" + defines,
@@ -155,6 +158,13 @@ TEST_F(GlslExtremes, CodesRoundTripAndSaturate) {
     // another surface's code.
     for (int k : {0, 1, 2, 3, 4}) EXPECT_LT(r[k].decoded, r[k].decoded_max) << bits << " value " << values[k];
     for (const auto& x : r) EXPECT_TRUE(std::isfinite(x.decoded));
+    // With material edges the code below the largest is another material that the outside pixel
+    // does not show: it decodes as the largest does, and geometry saturates below both.
+    const auto m = probe(cases, bits, "#define RSAA_MATERIAL_EDGES\n#define RSAA_PROBE_CODE (RSAA_CODE_MAX - 1u)\n");
+    EXPECT_EQ(m[0].decoded_max, 4.0f) << bits;
+    for (int k : {5, 6}) EXPECT_EQ(m[k].code, max - 2) << bits << " saturates below both material codes";
+    for (int k : {0, 1, 2}) EXPECT_EQ(m[k].code, r[k].code) << bits << " value " << values[k];
+    for (int k : {0, 1, 2, 3, 4}) EXPECT_LT(m[k].decoded, m[k].decoded_max) << bits << " value " << values[k];
   }
 }
 
@@ -167,6 +177,9 @@ namespace {
 // rsaa_classify for 8 similarities and a threshold per case.
 std::vector<std::uint32_t> classify(const std::vector<std::array<float, 9>>& cases) {
   const std::string source = gl::shader_source("rsaa_common.glsl") + R"(
+#ifndef RSAA_PROBE_CODE
+#define RSAA_PROBE_CODE RSAA_CODE_MAX
+#endif
 layout(local_size_x = 1) in;
 layout(std430, binding = 0) readonly buffer Cases { float values[]; };
 layout(std430, binding = 1) writeonly buffer Masks { uint masks[]; };
