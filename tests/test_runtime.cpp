@@ -32,6 +32,11 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
+// PSNR of the images as displayed (8-bit sRGB).
+double display_psnr(const Image& a, const Image& reference) {
+  return compare_images(to_display(a), to_display(reference)).psnr_db;
+}
+
 class Runtime : public test::GlTest {
  protected:
   static Image render(const std::string& scene_name, const TechniqueOptions& o) {
@@ -40,9 +45,7 @@ class Runtime : public test::GlTest {
     return render_frame(gpu, choose_camera(scene, std::nullopt), o, kWidth, kHeight);
   }
 
-  static double psnr(const Image& a, const Image& reference) {
-    return compare_images(to_display(a), to_display(reference)).psnr_db;
-  }
+  static double psnr(const Image& a, const Image& reference) { return display_psnr(a, reference); }
 };
 
 bool all_finite(const Image& image) {
@@ -728,6 +731,38 @@ TEST_F(Runtime, FacetEdgesLeaveSmoothShadingAndMaterialEdgesAlone) {
   EXPECT_THROW(make_rsaa(no_materials, 32, 24), std::invalid_argument);
 }
 
+// What the fetch check changes in one scene: both runs' masks equal, then over the pixels whose
+// colour differs, their count and squared error against the reference with and without it.
+struct FetchCheckChange {
+  std::size_t changed = 0;
+  double checked_error = 0.0, unchecked_error = 0.0, checked_db = 0.0, unchecked_db = 0.0;
+};
+FetchCheckChange fetch_check_change(const std::string& scene_name, const RsaaSettings& checked_settings, int width,
+                                    int height) {
+  RsaaSettings unchecked_settings = checked_settings;
+  unchecked_settings.fetch_check = "off";
+  const Scene scene = load_scene(scene_name);
+  const GpuScene gpu(scene);
+  const Image reference =
+      render_frame(gpu, choose_camera(scene, std::nullopt), technique_options("ssaa", 64), width, height);
+  const RsaaRun checked = rsaa_run(scene_name, checked_settings, width, height);
+  const RsaaRun unchecked = rsaa_run(scene_name, unchecked_settings, width, height);
+  EXPECT_EQ(checked.masks, unchecked.masks);
+  FetchCheckChange c;
+  for (std::size_t p = 0; p < checked.masks.size(); ++p) {
+    if (squared_error(checked.image.pixels[p], unchecked.image.pixels[p]) == 0.0) continue;
+    ++c.changed;
+    EXPECT_NE(checked.masks[p], (1u << 8) - 1u) << "pixel " << p << " has no dissimilar subsample";
+    c.checked_error += squared_error(checked.image.pixels[p], reference.pixels[p]);
+    c.unchecked_error += squared_error(unchecked.image.pixels[p], reference.pixels[p]);
+  }
+  c.checked_db = display_psnr(checked.image, reference), c.unchecked_db = display_psnr(unchecked.image, reference);
+  std::printf("%s %dx%d: fetch check %.2f dB (%zu pixels changed, error %.4f -> %.4f), off %.2f dB\n",
+              scene_name.c_str(), width, height, c.checked_db, c.changed, c.unchecked_error, c.checked_error,
+              c.unchecked_db);
+  return c;
+}
+
 // The fetch check is a default: an edge pixel none of whose dissimilar subsamples finds a like
 // surface in its outside pixel fetches with half the offset (the neighbours do not show what the
 // subsamples saw: thin side faces, contour lines). It keeps every mask, changes only edge pixels
@@ -735,33 +770,12 @@ TEST_F(Runtime, FacetEdgesLeaveSmoothShadingAndMaterialEdgesAlone) {
 // dB, 640x480 39.88 -> 40.04, 1280x720 43.21 -> 43.55; at 160x120, where the tiles' side faces are
 // below a pixel, it gains nothing, so this test renders 320x240).
 TEST_F(Runtime, TheFetchCheckByDefaultHelpsTheDefaultScene) {
-  constexpr int width = 320, height = 240;
   const RsaaSettings defaults;
   ASSERT_EQ(defaults.fetch_check, "neighbours");
-  RsaaSettings without = defaults;
-  without.fetch_check = "off";
-  const Scene scene = load_scene("builtin:default");
-  const GpuScene gpu(scene);
-  const Image reference =
-      render_frame(gpu, choose_camera(scene, std::nullopt), technique_options("ssaa", 64), width, height);
-  const RsaaRun checked = rsaa_run("builtin:default", defaults, width, height);
-  const RsaaRun unchecked = rsaa_run("builtin:default", without, width, height);
-  EXPECT_EQ(checked.masks, unchecked.masks);
-  std::size_t changed = 0;
-  double checked_error = 0.0, unchecked_error = 0.0;
-  for (std::size_t p = 0; p < checked.masks.size(); ++p) {
-    if (squared_error(checked.image.pixels[p], unchecked.image.pixels[p]) == 0.0) continue;
-    ++changed;
-    EXPECT_NE(checked.masks[p], 0xffu) << "pixel " << p << " has no dissimilar subsample";
-    checked_error += squared_error(checked.image.pixels[p], reference.pixels[p]);
-    unchecked_error += squared_error(unchecked.image.pixels[p], reference.pixels[p]);
-  }
-  const double with_check = psnr(checked.image, reference), no_check = psnr(unchecked.image, reference);
-  std::printf("default 320x240: fetch check %.2f dB (%zu pixels changed, error %.4f -> %.4f), off %.2f dB\n",
-              with_check, changed, unchecked_error, checked_error, no_check);
-  EXPECT_GT(changed, 50u);
-  EXPECT_LT(checked_error, 0.9 * unchecked_error);
-  EXPECT_GT(with_check, no_check + 0.15);
+  const FetchCheckChange c = fetch_check_change("builtin:default", defaults, 320, 240);
+  EXPECT_GT(c.changed, 50u);
+  EXPECT_LT(c.checked_error, 0.9 * c.unchecked_error);
+  EXPECT_GT(c.checked_db, c.unchecked_db + 0.15);
 }
 
 // Three coplanar parts of three materials, facing the camera: a grey left part, a black strip
@@ -796,37 +810,17 @@ std::string write_material_strip(const test::TempDir& dir) {
 // two other materials counted as "about as different" and the check changed nothing here: the
 // truck's window frames lost 0.3 dB to facet edges that way).
 TEST_F(Runtime, TheFetchCheckKnowsWhichMaterialTheNeighbourShows) {
-  constexpr int width = 320, height = 240;
   test::TempDir dir;
   const std::string strip = write_material_strip(dir);
+  ASSERT_EQ(load_scene(strip).draws.size(), 3u);
   const RsaaSettings defaults = rsaa_settings(technique_options("rsaa", 8));
   ASSERT_TRUE(defaults.material_edges);
   ASSERT_EQ(defaults.fetch_check, "neighbours");
-  RsaaSettings without = defaults;
-  without.fetch_check = "off";
-  const Scene scene = load_scene(strip);
-  ASSERT_EQ(scene.draws.size(), 3u);
-  const GpuScene gpu(scene);
-  const Image reference =
-      render_frame(gpu, choose_camera(scene, std::nullopt), technique_options("ssaa", 64), width, height);
-  const RsaaRun checked = rsaa_run(strip, defaults, width, height);
-  const RsaaRun unchecked = rsaa_run(strip, without, width, height);
-  EXPECT_EQ(checked.masks, unchecked.masks);
-  std::size_t changed = 0;
-  double checked_error = 0.0, unchecked_error = 0.0;
-  for (std::size_t p = 0; p < checked.masks.size(); ++p) {
-    if (squared_error(checked.image.pixels[p], unchecked.image.pixels[p]) == 0.0) continue;
-    ++changed;
-    checked_error += squared_error(checked.image.pixels[p], reference.pixels[p]);
-    unchecked_error += squared_error(unchecked.image.pixels[p], reference.pixels[p]);
-  }
-  const double with_check = psnr(checked.image, reference), no_check = psnr(unchecked.image, reference);
-  std::printf("material strip 320x240: fetch check %.2f dB (%zu pixels changed, error %.4f -> %.4f), off %.2f dB\n",
-              with_check, changed, unchecked_error, checked_error, no_check);
+  const FetchCheckChange c = fetch_check_change(strip, defaults, 320, 240);
   // (The strip is dark: the gain shows in PSNR, on sRGB, more than in linear error.)
-  EXPECT_GT(changed, 100u);
-  EXPECT_LT(checked_error, unchecked_error);
-  EXPECT_GT(with_check, no_check + 0.15);
+  EXPECT_GT(c.changed, 100u);
+  EXPECT_LT(c.checked_error, c.unchecked_error);
+  EXPECT_GT(c.checked_db, c.unchecked_db + 0.15);
 }
 
 // Narrow codes decide as wide ones: another material (and a surface over a background centre) is
