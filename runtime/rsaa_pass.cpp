@@ -120,8 +120,8 @@ constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
 // The record passes' lists: the pixels to code at kEdgeListBinding, the post-process's edge list here.
 constexpr int kRecordEdgeListBinding = 1;
 constexpr GLint kRecordListEdgesLocation = 1;  // rsaa_prepass_records.glsl's rsaa_list_edges
-// The listing pass's image units (RSAA_CODE_IMAGES): the code textures from kFirstCodeImageUnit
-// on, then the centre normal.
+// The compute post-process's image units for what it reads (RSAA_CODE_IMAGES): the code textures
+// from kFirstCodeImageUnit on, then the centre normal, then (material edges) the centre primitive.
 constexpr int kFirstCodeImageUnit = 2;
 // The record passes of the multisample pre-pass write the codes through the same image units.
 constexpr GLint kRecordRowsLocation = 0;
@@ -748,16 +748,19 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   if (settings.post == "compute") {
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
                                      list_defines;
+    // The listing pass and the resolve read the integer targets as images: codes, normal,
+    // primitive from kFirstCodeImageUnit (2 + 4 + 2 units at 16 subsamples, GL's least maximum 8).
+    const std::string image_defines = "#define RSAA_CODE_IMAGES " + std::to_string(kFirstCodeImageUnit) + "\n";
     gl_->classify_program = gl::make_program(
         {{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
-        post_defines + "#define RSAA_CODE_IMAGES " + std::to_string(kFirstCodeImageUnit) + "\n",
-        "RSAA post-process edge list");
+        post_defines + image_defines, "RSAA post-process edge list");
     glGetProgramiv(gl_->classify_program.get(), GL_COMPUTE_WORK_GROUP_SIZE, gl_->classify_group);
     gl_->scatter_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_scatter.comp")}},
                                             post_defines + "#define RSAA_SCRATCH_UNIT " + std::to_string(kScratchUnit) + "\n",
                                             "RSAA post-process in place");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
-                                                 post_defines, "RSAA post-process resolve of the edge list");
+                                                 post_defines + image_defines,
+                                                 "RSAA post-process resolve of the edge list");
   }
   gl::check("creating the RSAA pass");
 }
@@ -1340,10 +1343,12 @@ class OutputImage {
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
   const CompleteForImageStores complete_output(output);
   const CompleteForImageStores complete_mask(settings_.output_mask ? mask_output : 0);
-  // The listing pass reads the jittered pre-pass's codes and the centre normal as images.
+  // The listing pass and the resolve read the codes, the centre normal and (material edges) the
+  // centre primitive as images (RSAA_CODE_IMAGES).
   const int code_images = int(gl_->codes.size());
+  const int read_images = code_images + (settings_.material_edges ? 2 : 1);
   std::vector<int> image_units = {kOutputImageUnit, kMaskImageUnit};
-  for (int k = 0; k <= code_images; ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  for (int k = 0; k < read_images; ++k) image_units.push_back(kFirstCodeImageUnit + k);
   const gl::SavedComputeState saved({kEdgeListBinding}, image_units);
   // The rows listed per round: all of them unless the list cannot hold every pixel (then the
   // list is filled and resolved again for each band of rows).
@@ -1372,6 +1377,14 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
   else if (!one_round)
     copy_colour(frame.colour, resolved);
   if (settings_.output_mask) clear_to_all_similar(mask_output);
+  for (int k = 0; k < code_images; ++k)
+    glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
+                       GL_READ_ONLY, code_format(settings_.code_bits));
+  glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
+                     GL_RG16UI);
+  if (settings_.material_edges)
+    glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + 1), frame.centre_primitive, 0, GL_FALSE, 0,
+                       GL_READ_ONLY, GL_RG32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->edge_list.get());
   for (int first = 0; first < height_; first += rows) {
@@ -1383,11 +1396,6 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
       const GLuint empty_list[4] = {0, 1, 1, 0};
       glNamedBufferSubData(gl_->edge_list.get(), 0, sizeof empty_list, empty_list);
       glUseProgram(gl_->classify_program.get());
-      for (int k = 0; k < code_images; ++k)
-        glBindImageTexture(GLuint(kFirstCodeImageUnit + k), gl_->codes[std::size_t(k)].get(), 0, GL_FALSE, 0,
-                           GL_READ_ONLY, code_format(settings_.code_bits));
-      glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
-                         GL_RG16UI);
       glUniform2i(kClassifyRowsLocation, first, end);
       const GLint* group = gl_->classify_group;
       glDispatchCompute(GLuint((width_ + group[0] - 1) / group[0]), GLuint((end - first + group[1] - 1) / group[1]), 1);

@@ -20,10 +20,11 @@
 //                            compare as maximally different, as the pre-pass codes them
 //   RSAA_TABLE_ARRAY         (optional) take offsets from a table include (tables/P.glsl, included
 //                            before this file) instead of the table texture
-//   RSAA_CODE_IMAGES         (optional, RsaaPass's listing pass) rsaa_pixel_has_edge() reads the
-//                            codes and the centre normal as images, from
-//                            image unit RSAA_CODE_IMAGES on (codes, then the normal): on llvmpipe an
-//                            image load costs less than a texel fetch (README, *Cheaper post-processes*)
+//   RSAA_CODE_IMAGES         (optional, RsaaPass's compute passes) the codes, the centre normal
+//                            and (material edges) the centre primitive are read as images, from
+//                            image unit RSAA_CODE_IMAGES on (codes, then the normal, then the
+//                            primitive): on llvmpipe an image load costs less than a texel fetch
+//                            (README, *Cheaper post-processes*); the depth and colour stay textures
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
 //                            table, the code textures (ceil(RSAA_SAMPLE_COUNT / 4) units from
 //                            + 4), the centre primitive at + 8
@@ -57,6 +58,9 @@ layout(binding = RSAA_POST_FIRST_UNIT + 4) uniform usampler2D rsaa_codes[RSAA_CO
 layout(binding = RSAA_CODE_IMAGES, RSAA_CODE_IMAGE_FORMAT) uniform readonly uimage2D rsaa_code_images[RSAA_CODE_TEXTURES];
 layout(binding = RSAA_CODE_IMAGES + RSAA_CODE_TEXTURES, rg16ui) uniform readonly uimage2D rsaa_centre_normal_image;
 #define RSAA_READS_CODE_IMAGES
+#define RSAA_POST_NORMAL_AT(pixel) imageLoad(rsaa_centre_normal_image, pixel).xy
+#else
+#define RSAA_POST_NORMAL_AT(pixel) texelFetch(rsaa_post_centre_normal, pixel, 0).xy
 #endif
 
 // The resampling offset of a mask (GL window space) and its representative dissimilar subsample.
@@ -86,13 +90,22 @@ vec3 rsaa_post_position(ivec2 pixel) {
 }
 
 #ifdef RSAA_MATERIAL_EDGES
+#ifdef RSAA_READS_CODE_IMAGES
+layout(binding = RSAA_CODE_IMAGES + RSAA_CODE_TEXTURES + 1, rg32ui) uniform readonly uimage2D
+    rsaa_centre_primitive_image;
+#else
 layout(binding = RSAA_POST_FIRST_UNIT + 8) uniform usampler2D rsaa_post_centre_primitive;  // RG32UI
+#endif
 #endif
 
 // The material at a pixel's centre (material edges), else one material for all.
 uint rsaa_post_material(ivec2 pixel) {
 #ifdef RSAA_MATERIAL_EDGES
+#ifdef RSAA_READS_CODE_IMAGES
+  return imageLoad(rsaa_centre_primitive_image, pixel).y;
+#else
   return texelFetch(rsaa_post_centre_primitive, pixel, 0).y;
+#endif
 #else
   return 0u;
 #endif
@@ -131,7 +144,7 @@ RsaaOutside rsaa_outside_pixels(ivec2 pixel, vec3 position, vec3 normal) {
   o.centre_material = material;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     o.pixel[i] = clamp(pixel + rsaa_neighbours[i].xy, ivec2(0), last);
-    o.normal[i] = texelFetch(rsaa_post_centre_normal, o.pixel[i], 0).xy;
+    o.normal[i] = RSAA_POST_NORMAL_AT(o.pixel[i]);
     o.position[i] = rsaa_post_position(o.pixel[i]);
     o.material[i] = rsaa_post_material(o.pixel[i]);
     o.similarity[i] = rsaa_centres_similarity(material, position, normal, o.material[i], o.position[i],
@@ -300,7 +313,7 @@ uint rsaa_pixel_mask(ivec2 pixel, out float similarity[RSAA_SAMPLE_COUNT], out u
   }
   centre_normal = uvec2(0u);
   if (!any_different && !any_uncovered) return RSAA_ALL_SIMILAR;
-  centre_normal = texelFetch(rsaa_post_centre_normal, pixel, 0).xy;
+  centre_normal = RSAA_POST_NORMAL_AT(pixel);
   bool centre_is_surface = rsaa_is_surface(centre_normal);
   if (!any_different && !centre_is_surface) return RSAA_ALL_SIMILAR;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) similarity[i] = rsaa_decode_similarity(codes[i], centre_is_surface);
@@ -322,11 +335,7 @@ bool rsaa_pixel_has_edge(ivec2 pixel) {
   rsaa_pixel_codes(pixel, codes);
   int edge = rsaa_codes_edge(codes, rsaa_threshold);
   if (edge != RSAA_CODES_EDGE_IF_CENTRE_IS_SURFACE) return edge == RSAA_CODES_EDGE;
-#ifdef RSAA_READS_CODE_IMAGES
-  return rsaa_is_surface(imageLoad(rsaa_centre_normal_image, pixel).xy);
-#else
-  return rsaa_is_surface(texelFetch(rsaa_post_centre_normal, pixel, 0).xy);
-#endif
+  return rsaa_is_surface(RSAA_POST_NORMAL_AT(pixel));
 }
 
 vec4 rsaa_resolve(ivec2 pixel, out uint mask) {

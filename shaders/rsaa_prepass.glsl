@@ -83,33 +83,47 @@ uint rsaa_outside_material(ivec2 pixel, int subsample) {
 }
 #endif
 
-// The compressed similarity code of subsample `subsample` of `pixel`: how different the surface
-// it sees (view-space position and geometric normal) is from the surface at the pixel centre.
-// `primitive` is the value the engine wrote into the centre primitive target for that triangle
-// (id + 1): when equal, the subsample is on the centre's triangle and the test is skipped; 0 never
-// skips it. With RSAA_MATERIAL_EDGES `material` is the value the engine wrote into the centre
-// primitive target's second channel for that draw (else ignored): a subsample on another material
-// than the centre's is maximally different, so that colour edges between coplanar parts (a
-// painted band on a wall, a decal, a window in its frame), which no geometric similarity sees,
-// are resampled.
-uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 view_face_normal, uint primitive,
-                         uint material) {
-  uvec2 centre_primitive = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+// What a subsample is compared with: the surface at its pixel's centre, as the G-buffer holds it.
+struct RsaaCentre {
+  uvec2 primitive;  // the centre primitive target's texel (.y the material with material edges)
+  uvec2 normal;     // encoded (rsaa_is_surface(): (0, 0) is the background)
+  vec3 position;    // view space
+};
+
+RsaaCentre rsaa_centre(ivec2 pixel) {
+  RsaaCentre c;
+  c.primitive = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+  c.normal = texelFetch(rsaa_centre_normal, pixel, 0).xy;
+  c.position = rsaa_centre_position(pixel);
+  return c;
+}
+
+// The compressed similarity code of subsample `subsample` of `pixel` (whose centre is `centre`:
+// rsaa_centre(), read once for all of a pixel's subsamples by the record passes): how different
+// the surface it sees (view-space position and geometric normal) is from the surface at the pixel
+// centre. `primitive` is the value the engine wrote into the centre primitive target for that
+// triangle (id + 1): when equal, the subsample is on the centre's triangle and the test is
+// skipped; 0 never skips it. With RSAA_MATERIAL_EDGES `material` is the value the engine wrote
+// into the centre primitive target's second channel for that draw (else ignored): a subsample on
+// another material than the centre's is maximally different, so that colour edges between
+// coplanar parts (a painted band on a wall, a decal, a window in its frame), which no geometric
+// similarity sees, are resampled.
+uint rsaa_subsample_code(RsaaCentre centre, ivec2 pixel, int subsample, vec3 view_position, vec3 view_face_normal,
+                         uint primitive, uint material) {
 #ifdef RSAA_MATERIAL_EDGES
   // Primitive ids repeated across draws must not hide a material edge: both must match.
-  if (primitive != 0u && centre_primitive == uvec2(primitive, material)) return 1u;  // decodes to 0
+  if (primitive != 0u && centre.primitive == uvec2(primitive, material)) return 1u;  // decodes to 0
 #else
-  if (primitive != 0u && centre_primitive.x == primitive) return 1u;  // decodes to 0
+  if (primitive != 0u && centre.primitive.x == primitive) return 1u;  // decodes to 0
 #endif
-  uvec2 centre_normal = texelFetch(rsaa_centre_normal, pixel, 0).xy;
   // A surface subsample in a background pixel: different.
-  if (!rsaa_is_surface(centre_normal)) return RSAA_CODE_MAX;
+  if (!rsaa_is_surface(centre.normal)) return RSAA_CODE_MAX;
 #ifdef RSAA_MATERIAL_EDGES
-  if (centre_primitive.y != material)
+  if (centre.primitive.y != material)
     return rsaa_outside_material(pixel, subsample) == material ? RSAA_CODE_MAX : RSAA_CODE_UNSEEN_MATERIAL;
 #endif
-  float similarity = rsaa_similarity(view_position, view_face_normal, rsaa_centre_position(pixel),
-                                     rsaa_decode_normal(centre_normal));
+  float similarity = rsaa_similarity(view_position, view_face_normal, centre.position,
+                                     rsaa_decode_normal(centre.normal));
 #if RSAA_AUTH == 2
   // Pre-pass authentication (paper section 2.4): a subsample that looks different from the
   // centre but even more different from its nearest outside pixel joins the similar cluster.
@@ -128,6 +142,12 @@ uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 vi
   }
 #endif
   return rsaa_encode_similarity(similarity);
+}
+
+uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 view_face_normal, uint primitive,
+                         uint material) {
+  return rsaa_subsample_code(rsaa_centre(pixel), pixel, subsample, view_position, view_face_normal, primitive,
+                             material);
 }
 
 // ---- the multisample pre-pass's surface records (RSAA_PREPASS_MSAA): what a sample sees,

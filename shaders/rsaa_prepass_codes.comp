@@ -10,7 +10,7 @@ void main() {
   if (index >= rsaa_list_count) return;
   uint entry = rsaa_list_pixels[index];
   ivec2 pixel = ivec2(entry & 0xffffu, entry >> 16u);
-  uvec2 centre = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+  RsaaCentre centre = rsaa_centre(pixel);  // once for all subsamples
   uint codes[RSAA_SAMPLE_COUNT];
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
     ivec2 raster;
@@ -21,7 +21,7 @@ void main() {
     float depth = rsaa_record_depth(i, raster, sample_index);
     vec3 point = rsaa_view_position(vec2(pixel) + rsaa_subsample_window[i], depth, rsaa_inverse_projection,
                                     rsaa_viewport);
-    codes[i] = rsaa_record_is_surface(record) ? rsaa_record_code(pixel, i, point, record, centre) : 0u;
+    codes[i] = rsaa_record_is_surface(record) ? rsaa_record_code(centre, pixel, i, point, record) : 0u;
   }
   rsaa_store_codes(pixel, codes);
   rsaa_list_if_edge(pixel, codes);

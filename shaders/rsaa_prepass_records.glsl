@@ -131,9 +131,10 @@ bool rsaa_record_on_centres_triangle(uvec2 record, uint centre_surface) {
 
 // The code of subsample i of `pixel` whose record shows a surface at view-space `point`: the
 // jittered pre-pass's rsaa_subsample_code(), with the record's primitive and material widened to
-// the centre's (`centre`: the centre primitive target's texel) where their stored bits agree with
-// it, so that it decides as the listing pass did.
-uint rsaa_record_code(ivec2 pixel, int i, vec3 point, uvec2 record, uvec2 centre) {
+// the centre's (`c`: rsaa_centre(pixel)) where their stored bits agree with it, so that it decides
+// as the listing pass did.
+uint rsaa_record_code(RsaaCentre c, ivec2 pixel, int i, vec3 point, uvec2 record) {
+  uvec2 centre = c.primitive;
   uint primitive = record.x, material = 0u;
 #ifdef RSAA_MATERIAL_EDGES
   primitive &= RSAA_RECORD_PRIMITIVE_BITS;
@@ -147,7 +148,7 @@ uint rsaa_record_code(ivec2 pixel, int i, vec3 point, uvec2 record, uvec2 centre
     material = stored == (outside & RSAA_RECORD_MATERIAL_BITS) ? outside : stored;
   }
 #endif
-  return rsaa_subsample_code(pixel, i, point, rsaa_record_normal(record), primitive, material);
+  return rsaa_subsample_code(c, pixel, i, point, rsaa_record_normal(record), primitive, material);
 }
 
 float rsaa_record_depth(int i, ivec2 raster, int sample_index) {
