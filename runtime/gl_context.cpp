@@ -28,6 +28,11 @@ void check(const char* where) {
 }
 
 void check_none_pending(const char* call) {
+  // Without a current context every GL call does nothing and reads zeros: the library would
+  // report a 0x0 size limit or "not a texture" instead of the cause.
+  if (glGetString(GL_VERSION) == nullptr)
+    throw GlError(std::string(call) + ": no OpenGL context is current on this thread (make the engine's GL 4.5 "
+                  "context current first)");
   GLenum first = glGetError();
   if (first == GL_NO_ERROR) return;
   while (glGetError() != GL_NO_ERROR) {
@@ -36,11 +41,11 @@ void check_none_pending(const char* call) {
                 " was called: an earlier GL call of the caller's failed (" + call + " did nothing)");
 }
 
-void require_gl45() {
-  if (epoxy_gl_version() < 45)
-    throw GlError("OpenGL 4.5 core is required; the context offers " +
-                  std::to_string(epoxy_gl_version() / 10) + "." +
-                  std::to_string(epoxy_gl_version() % 10));
+void require_gl45(const char* call) {
+  const int version = epoxy_gl_version();
+  if (version < 45)
+    throw GlError((call ? std::string(call) + ": " : std::string()) + "OpenGL 4.5 is required; the context offers " +
+                  std::to_string(version / 10) + "." + std::to_string(version % 10));
 }
 
 // Threads kept free for what starts after the context: OpenImageIO's logger (4, image_io.cpp)

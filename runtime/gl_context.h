@@ -18,11 +18,12 @@ void check(const char* where);
 // At the start of a call into the library: throws GlError if the GL error flag is already set
 // (and drains it), naming `call` and saying the error came from an earlier GL call of the
 // caller's. Without it a library call reported the engine's stray error as its own, from
-// wherever it next checked, after changing part of what it was to do.
+// wherever it next checked, after changing part of what it was to do. Throws GlError too when no
+// context is current.
 void check_none_pending(const char* call);
 
-// Throws GlError when the current context is older than 4.5 core.
-void require_gl45();
+// Throws GlError (naming `call` when given) when the current context is older than 4.5.
+void require_gl45(const char* call = nullptr);
 
 class HeadlessContext {
  public:

@@ -412,6 +412,7 @@ glm::ivec2 window_step(Vec2 sample) {
 RsaaTargets::RsaaTargets(int width, int height, bool material_edges)
     : width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   gl::check_none_pending("RsaaTargets::RsaaTargets");
+  gl::require_gl45("RsaaTargets::RsaaTargets");
   require_image_size("RsaaTargets", width, height);
   gl_->colour = gl::make_texture_2d(GL_RGBA16F, width, height, GL_LINEAR);
   gl_->normal = gl::make_texture_2d(GL_RG16UI, width, height);
@@ -499,6 +500,19 @@ SamplePattern query_gl_sample_pattern(int samples) {
 
 std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
                                 bool union_pattern, glm::ivec2 cells) {
+  if (sample_count < 1 || sample_count > kMaxTableSamples)
+    throw std::invalid_argument("rsaa_shader_defines: sample_count " + std::to_string(sample_count) +
+                                " is not 1 to " + std::to_string(kMaxTableSamples));
+  code_format(settings.code_bits);  // throws unless 8, 16 or 32
+  if (multisample_prepass && union_pattern && sample_count % 2 != 0)
+    throw std::invalid_argument("rsaa_shader_defines: a union pattern's two draws need an even sample_count, not " +
+                                std::to_string(sample_count));
+  if (multisample_prepass && !union_pattern && cells != glm::ivec2(1, 1) &&
+      (cells.x < 1 || cells.y < 1 || cells.x > sample_count || cells.y > sample_count ||
+       sample_count % (cells.x * cells.y) != 0))
+    throw std::invalid_argument("rsaa_shader_defines: cells " + std::to_string(cells.x) + "x" +
+                                std::to_string(cells.y) + " do not divide sample_count " + std::to_string(sample_count) +
+                                " into whole draws (each at least 1x1)");
   std::string defines = "#define RSAA_SAMPLE_COUNT " + std::to_string(sample_count) + "\n" +
                         "#define RSAA_AUTH " + std::to_string(settings.auth) + "\n" +
                         "#define RSAA_CODE_BITS " + std::to_string(settings.code_bits) + "\n" +
@@ -566,6 +580,7 @@ std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_rec
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     : settings_(settings), width_(width), height_(height), gl_(std::make_unique<Objects>()) {
   gl::check_none_pending("RsaaPass::RsaaPass");
+  gl::require_gl45("RsaaPass::RsaaPass");
   require_image_size("RsaaPass", width, height);
   if (settings.auth < 0 || settings.auth > 2)
     throw std::invalid_argument("RSAA auth must be 0, 1 or 2");
@@ -573,7 +588,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
   GLint units = 0, bindings = 0;
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
   glGetIntegerv(GL_MAX_UNIFORM_BUFFER_BINDINGS, &bindings);
-  if (settings.prepass_first_unit < 0 || settings.prepass_first_unit + 2 >= units)
+  if (settings.prepass_first_unit < 0 || settings.prepass_first_unit > units - 3)  // (no overflow near INT_MAX)
     throw std::invalid_argument("RSAA prepass_first_unit " + std::to_string(settings.prepass_first_unit) +
                                 ": the pre-pass needs units " + std::to_string(settings.prepass_first_unit) +
                                 " to +2, this driver has " + std::to_string(units) + " fragment texture units");

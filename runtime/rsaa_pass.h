@@ -67,7 +67,10 @@
 // nearest sampler objects) at units settings.prepass_first_unit to +2; the callback may use any other unit and binding, and may
 // set culling for its geometry, but must draw with the colour mask, depth test, function and
 // writes and blending the pass set (the codes depend on them; state it changes after drawing is
-// its own business). After each call the pass checks that the current program declares the
+// its own business, so the pass cannot check these: a callback that sets its own colour mask
+// before drawing writes every subsample's code into all four channels of the jittered
+// pre-pass's targets). It must not move or destroy the pass that calls it. After each call the
+// pass checks that the current program declares the
 // block at that binding (no glUniformBlockBinding elsewhere) and was built from the
 // prepass_glsl() of a pass with this pass's pre-pass settings (its text declares a uniform named
 // after the settings the pre-pass reads: sample count, code bits, units, similarity, depth
@@ -274,7 +277,9 @@ struct RsaaSettings {
 
 // The #define lines that configure shaders/rsaa_prepass.glsl and rsaa_post.glsl for `settings`,
 // `sample_count` subsamples and the jittered or the multisample pre-pass (for a union pattern:
-// two draws of half the samples, see RsaaSettings::prepass). Needs no GL.
+// two draws of half the samples, see RsaaSettings::prepass). Needs no GL. Throws
+// std::invalid_argument for a sample_count outside 1-16, code bits other than 8, 16 or 32, and
+// (multisample) an odd union pattern or cells that do not divide the sample count.
 std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, bool multisample_prepass,
                                 bool union_pattern = false, glm::ivec2 cells = {1, 1});
 // The first of the record passes' four texture units (records and depths of each draw) beside

@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+#include <climits>
+
+#include <epoxy/egl.h>
 #include <gtest/gtest.h>
 
 #include "core/rsaa/offset_table.h"
@@ -397,6 +400,64 @@ TEST_F(RsaaPassMisuse, TheEnginesDepthStencilBufferIsTakenAsItIs) {
     EXPECT_THROW(masks_of(pass, frame, scene_draw(scene)), std::invalid_argument);
   }
   gl::check("depth-stencil frame");
+}
+
+// Without a current context every GL call reads zeros: the pass said "this driver takes 1x1 to
+// 0x0" or "1 is not a texture". Every entry point now says that no context is current.
+TEST_F(RsaaPassMisuse, NoCurrentContextIsAnErrorSayingSo) {
+  const test::SceneFrame scene("builtin:default", kWidth, kHeight);
+  RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
+  const gl::Texture output = gl::make_texture_2d(GL_RGBA16F, kWidth, kHeight);
+  const EGLDisplay display = eglGetCurrentDisplay();
+  const EGLContext context = eglGetCurrentContext();
+  const EGLSurface draw = eglGetCurrentSurface(EGL_DRAW), read = eglGetCurrentSurface(EGL_READ);
+  ASSERT_NE(context, EGL_NO_CONTEXT);
+  ASSERT_TRUE(eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+  const auto expect_no_context = [](const std::function<void()>& call, const char* name) {
+    try {
+      call();
+      ADD_FAILURE() << name << " did not throw without a current context";
+    } catch (const gl::GlError& e) {
+      EXPECT_NE(std::string(e.what()).find("no OpenGL context is current"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  };
+  expect_no_context([] { RsaaPass another(RsaaSettings{}, kWidth, kHeight); }, "RsaaPass::RsaaPass");
+  expect_no_context([] { RsaaTargets targets(kWidth, kHeight); }, "RsaaTargets::RsaaTargets");
+  expect_no_context([&] { pass.render_subsamples(scene.frame(), scene_draw(scene)); }, "RsaaPass::render_subsamples");
+  expect_no_context([&] { pass.resolve(scene.frame(), output.get()); }, "RsaaPass::resolve");
+  ASSERT_TRUE(eglMakeCurrent(display, draw, read, context));
+  // And the pass works again once it is current.
+  EXPECT_GT(masks_of(pass, scene.frame(), scene_draw(scene)).size(), 0u);
+  gl::check("context made current again");
+}
+
+// A pre-pass unit setting near INT_MAX overflowed the range check (undefined behaviour) and
+// reached the shader compiler; shader defines divided by zero cells (SIGFPE).
+TEST_F(RsaaPassMisuse, SettingsAtTheirLimitsAreRefusedNamingThem) {
+  for (const int unit : {INT_MAX, INT_MAX - 1, INT_MAX - 2, -1}) {
+    RsaaSettings settings;
+    settings.prepass_first_unit = unit;
+    try {
+      RsaaPass pass(settings, kWidth, kHeight);
+      ADD_FAILURE() << "prepass_first_unit " << unit << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("prepass_first_unit"), std::string::npos) << e.what();
+    }
+  }
+  const RsaaSettings defaults;
+  EXPECT_THROW(rsaa_shader_defines(defaults, 8, true, false, {0, 2}), std::invalid_argument);
+  EXPECT_THROW(rsaa_shader_defines(defaults, 8, true, false, {2, 0}), std::invalid_argument);
+  EXPECT_THROW(rsaa_shader_defines(defaults, 8, true, false, {3, 1}), std::invalid_argument);
+  EXPECT_THROW(rsaa_shader_defines(defaults, 8, true, false, {-1, -8}), std::invalid_argument);
+  EXPECT_THROW(rsaa_shader_defines(defaults, 7, true, true), std::invalid_argument);
+  for (const int samples : {0, -1, 17, INT_MAX}) EXPECT_THROW(rsaa_shader_defines(defaults, samples, false), std::invalid_argument);
+  RsaaSettings bits;
+  bits.code_bits = 3;
+  EXPECT_THROW(rsaa_shader_defines(bits, 8, false), std::invalid_argument);
+  EXPECT_NO_THROW(rsaa_shader_defines(defaults, 8, true, false, {1, 2}));
+  EXPECT_NO_THROW(rsaa_shader_defines(defaults, 16, true, false, {2, 2}));
+  EXPECT_NO_THROW(rsaa_shader_defines(defaults, 8, true, true));
 }
 
 }  // namespace
