@@ -97,8 +97,10 @@ const OiioCodec& load_codec() {
     throw std::runtime_error(
         "images cannot be read or written here: OpenImageIO's logger (log4cplus, loaded with "
         "OpenVDB) starts " + std::to_string(kThreadsStartedByTheModule) +
-        " threads when it loads and ends the process when it cannot, and the process limit" +
-        process_limit_text() + " leaves no room for them; raise the limit (ulimit -u) or end other processes of this user");
+        " threads when it loads and ends the process when it cannot, and they cannot start here: the process limit" +
+        process_limit_text() + " or the address-space limit" + address_space_limit_text() +
+        " leaves no room for them (a thread's stack needs address space too); raise the limits (ulimit -u, "
+        "ulimit -v) or end other processes of this user");
   // The installed module relative to this executable first (an install under another prefix,
   // or moved, carries its own), then the build's, then the configured install prefix's.
   std::vector<std::string> paths;

@@ -22,6 +22,7 @@
 #include <assimp/scene.h>
 #include "core/util/atomic_file.h"
 #include "core/util/colour.h"
+#include "core/util/printable.h"
 #include "image/image_io.h"
 #include "runtime/allocation_budget.h"
 #include "runtime/coplanar_draws.h"
@@ -31,6 +32,18 @@ namespace rsaa {
 namespace {
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Whether any triangle of `scene` has an area (in double: two sides not parallel, relative to
+// their lengths, so that the float corners of a sliver far from the origin still count).
+bool has_area(const Scene& scene) {
+  for (std::size_t t = 0; t + 2 < scene.indices.size(); t += 3) {
+    const glm::dvec3 a(scene.vertices[scene.indices[t]].position), b(scene.vertices[scene.indices[t + 1]].position),
+        c(scene.vertices[scene.indices[t + 2]].position);
+    const glm::dvec3 e1 = b - a, e2 = c - a;
+    if (glm::length(glm::cross(e1, e2)) > 1e-12 * glm::length(e1) * glm::length(e2)) return true;
+  }
+  return false;
+}
 
 // Decoded texture in 8-bit sRGB RGBA (straight alpha, as textures are sampled).
 TextureImage to_texture(const DecodedImage& d) {
@@ -362,7 +375,8 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
   // edge runs between them; a mesh whose vertex colours vary is an appearance of its own.
   std::map<std::string, std::uint32_t> appearances;
 
-  std::size_t dropped = 0;
+  std::size_t dropped = 0;  // faces with a non-finite or out-of-range vertex, the first named
+  std::string first_dropped;
   for (unsigned k = 0; k < ai->mNumMeshes; ++k) {
     const aiMesh* mesh = ai->mMeshes[k];
     if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
@@ -405,7 +419,7 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
       for (int c = 0; c < 3; ++c)
         ok = ok && face.mIndices[c] < mesh->mNumVertices && finite(mesh->mVertices[face.mIndices[c]]);
       if (!ok) {
-        ++dropped;
+        if (dropped++ == 0) first_dropped = "mesh " + std::to_string(k) + " face " + std::to_string(f);
         continue;
       }
       for (int c = 0; c < 3; ++c) scene.indices.push_back(base + face.mIndices[c]);
@@ -416,8 +430,16 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
   if (scene.indices.empty())
     throw std::runtime_error(what + ": no triangles to draw" +
                              (dropped ? " (" + std::to_string(dropped) +
-                                            " had non-finite or out-of-range vertices)"
+                                            " had non-finite or out-of-range vertices, the first " + first_dropped + ")"
                                       : ""));
+  // A model whose every triangle has zero area draws nothing: refused like one without triangles
+  // (an empty image and a table of no masks said nothing was wrong).
+  if (!has_area(scene))
+    throw std::runtime_error(what + ": no triangles to draw (all " + std::to_string(scene.indices.size() / 3) +
+                             " have zero area)");
+  if (dropped)
+    std::fprintf(stderr, "rsaa: warning: %s: %zu triangle%s left out: a vertex not finite or out of range (the first %s)\n",
+                 printable(what).c_str(), dropped, dropped == 1 ? "" : "s", first_dropped.c_str());
   check_frameable(scene, what);
   return model;
 }
@@ -441,13 +463,13 @@ Scene with_textures(ImportedModel model) {
       } else {
         if (!std::filesystem::exists(source.name, ec)) {
           std::fprintf(stderr, "rsaa: warning: %s: texture '%s' not found; drawn in its material's colour\n",
-                       what.c_str(), source.name.c_str());
+                       printable(what).c_str(), printable(source.name).c_str());
           continue;
         }
         // A name that resolves to a directory (a path that ends in a separator) names no image.
         if (std::filesystem::is_directory(source.name, ec)) {
           std::fprintf(stderr, "rsaa: warning: %s: texture '%s' is a directory; drawn in its material's colour\n",
-                       what.c_str(), source.name.c_str());
+                       printable(what).c_str(), printable(source.name).c_str());
           continue;
         }
         decoded = decode_image(source.name, read_whole_file(source.name, kTextureBudget.file_bytes, "texture"),
@@ -462,8 +484,8 @@ Scene with_textures(ImportedModel model) {
     } catch (const LimitError& e) {
       throw std::runtime_error(what + ": " + e.what());
     } catch (const std::runtime_error& e) {
-      std::fprintf(stderr, "rsaa: warning: %s: texture not used (%s); drawn in its material's colour\n", what.c_str(),
-                   e.what());
+      std::fprintf(stderr, "rsaa: warning: %s: texture not used (%s); drawn in its material's colour\n",
+                   printable(what).c_str(), printable(e.what()).c_str());
     }
   }
   for (DrawRange& draw : scene.draws)

@@ -195,6 +195,25 @@ TEST(Bench, TinyRunWritesWellFormedResults) {
       EXPECT_NE(std::string(e.what()).find("results[3]." + field), std::string::npos) << e.what();
     }
   }
+  // Another layout's version (or none) is refused, naming it: fields may change meaning.
+  for (const nlohmann::json& version : {nlohmann::json(999), nlohmann::json("abc"), nlohmann::json()}) {
+    nlohmann::json other = json;
+    if (version.is_null()) other.erase("version");
+    else other["version"] = version;
+    test::write_text(dir.file("other.json"), other.dump());
+    try {
+      bench::read_results_json(dir.file("other.json"), read_options);
+      ADD_FAILURE() << "version " << version.dump() << " was read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("this build reads version 1"), std::string::npos) << e.what();
+    }
+  }
+  // A '|' in a scene's name is escaped in the report's tables, not a cell of its own.
+  auto piped = results;
+  for (auto& r : piped) r.scene = "pipe/a|b.obj";
+  const std::string piped_report = bench::results_markdown(o, piped);
+  EXPECT_NE(piped_report.find("| a\\|b | "), std::string::npos) << piped_report;
+  EXPECT_EQ(piped_report.find("| a|b | "), std::string::npos) << piped_report;
   nlohmann::json edited = json;
   edited["results"][1]["passes"][0]["wall_ms"] = -2.0;
   test::write_text(dir.file("edited.json"), edited.dump());

@@ -10,6 +10,7 @@
 
 #include "core/util/atomic_file.h"
 #include "core/util/json_unique.h"
+#include "core/util/printable.h"
 #include "core/rsaa/conventions.h"
 #include "core/rsaa/fallback.h"
 
@@ -51,17 +52,7 @@ std::string upper(std::string s) {
 std::string generated_by(const OffsetTable& table) {
   const auto it = table.training.find("command");
   if (it == table.training.end() || !it->is_string()) return "(unknown)";
-  std::string out;
-  for (unsigned char c : it->get<std::string>()) {
-    if (c >= 0x20 && c != 0x7f) {
-      out += char(c);
-    } else {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\x%02x", c);
-      out += buffer;
-    }
-  }
-  return out;
+  return printable(it->get<std::string>());
 }
 
 // --- reading -------------------------------------------------------------------------------

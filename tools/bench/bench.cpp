@@ -1,3 +1,4 @@
+#include "tools/bench/markdown.h"
 #include "tools/bench/bench.h"
 #include "tools/bench/csv.h"
 
@@ -24,6 +25,7 @@
 namespace rsaa::bench {
 namespace {
 
+constexpr int kBenchJsonVersion = 1;  // bench.json's layout (read_results_json reads this one only)
 constexpr double kIdenticalDb = 99.0;  // PSNR reported for identical images
 // The label of the second baseline: what RSAA's added cost is compared with.
 const char* const kMsaaBaseline = "msaa 4x";
@@ -279,7 +281,7 @@ const TechniqueResult* cheapest_reaching(const std::vector<TechniqueResult>& res
 
 std::string results_json(const BenchOptions& o, const std::vector<TechniqueResult>& results) {
   nlohmann::json out = {{"format", "rsaa-bench"},
-                        {"version", 1},
+                        {"version", kBenchJsonVersion},
                         {"width", o.width},
                         {"height", o.height},
                         {"timed_frames", o.frames},
@@ -372,6 +374,10 @@ std::vector<TechniqueResult> read_results_json(const std::string& path, BenchOpt
   try {
     j = parse_json_with_unique_keys(read_whole_file(path));
     if (j.at("format") != "rsaa-bench") throw std::runtime_error("not an rsaa-bench file");
+    // Fields may change meaning between versions: only the one this build writes is read.
+    if (!j.contains("version") || j.at("version") != kBenchJsonVersion)
+      throw std::runtime_error("version " + (j.contains("version") ? j.at("version").dump() : std::string("missing")) +
+                               ", this build reads version " + std::to_string(kBenchJsonVersion));
     o.width = j.at("width");
     o.height = j.at("height");
     o.frames = j.at("timed_frames");
@@ -477,7 +483,7 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
   for (const TechniqueResult& r : results) {
     if (scenes.empty() || scenes.back() != r.scene) scenes.push_back(r.scene);
     std::snprintf(line, sizeof line, "| %s | %s%s | %.2f | %.4f | %.2f | %.2f | %.2f | %.1f | %.2f | %.0f |\n",
-                  scene_short_name(r.scene).c_str(), r.pareto ? "* " : "", r.label.c_str(), r.psnr_db, r.ssim,
+                  markdown_cell(scene_short_name(r.scene)).c_str(), r.pareto ? "* " : "", r.label.c_str(), r.psnr_db, r.ssim,
                   r.luma_error_share, r.orbit_psnr_db, r.flicker_psnr_db, r.frame_ms, r.frame_ratio,
                   r.bytes_per_pixel);
     s << line;
@@ -493,7 +499,7 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
                     p.wall_milliseconds, copy_multiple(r, p));
       passes += line;
     }
-    std::snprintf(line, sizeof line, "| %s | %s | %.2f | %s |\n", scene_short_name(r.scene).c_str(), r.label.c_str(),
+    std::snprintf(line, sizeof line, "| %s | %s | %.2f | %s |\n", markdown_cell(scene_short_name(r.scene)).c_str(), r.label.c_str(),
                   r.copy_ms, passes.c_str());
     s << line;
   }
@@ -513,7 +519,7 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
     const double rsaa_adds = r.frame_ms - noaa_ms, msaa_adds = msaa_ms - noaa_ms;
     char multiple[32] = "-";  // 4x MSAA added nothing measurable: no multiple of it
     if (msaa_adds > 0.0) std::snprintf(multiple, sizeof multiple, "%.2fx", rsaa_adds / msaa_adds);
-    std::snprintf(line, sizeof line, "| %s | %s | %.1f | %.1f | %s |\n", scene_short_name(r.scene).c_str(),
+    std::snprintf(line, sizeof line, "| %s | %s | %.1f | %.1f | %s |\n", markdown_cell(scene_short_name(r.scene)).c_str(),
                   r.label.c_str(), rsaa_adds, msaa_adds, multiple);
     added += line;
   }
@@ -546,7 +552,7 @@ std::string results_markdown(const BenchOptions& o, const std::vector<TechniqueR
     };
     char best_text[128] = "-";
     if (best) std::snprintf(best_text, sizeof best_text, "%s: %.2f (%.1fx)", best->label.c_str(), best->psnr_db, best->frame_ratio);
-    s << "| " << scene_short_name(scene) << " | " << psnr("noaa") << " | " << psnr("fxaa") << " | " << psnr("msaa 4x")
+    s << "| " << markdown_cell(scene_short_name(scene)) << " | " << psnr("noaa") << " | " << psnr("fxaa") << " | " << psnr("msaa 4x")
       << " | " << best_text << " | "
       << signed_db(find(results, scene, "rsaa 8x sadp auth0"), find(results, scene, "rsaa 4x gl4x sadp auth0")) << " | "
       << signed_db(find(results, scene, "rsaa 8x sadp auth0"), find(results, scene, "rsaa 8x depth auth0")) << " | "

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+
+#include "core/util/printable.h"
 #include <fstream>
 #include <memory>
 
@@ -51,7 +53,7 @@ nlohmann::json accuracy_json(const std::string& file, const OffsetTable& table,
 
 std::string made_by(const OffsetTable& table) {
   const auto command = table.training.find("command");
-  return command != table.training.end() && command->is_string() ? command->get<std::string>()
+  return command != table.training.end() && command->is_string() ? printable(command->get<std::string>())
                                                                    : "(unknown)";
 }
 

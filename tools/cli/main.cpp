@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/util/printable.h"
 #include "tools/cli/commands.h"
 
 namespace {
@@ -107,7 +108,8 @@ int main(int argc, char** argv) {
     std::fflush(nullptr);
     std::_Exit(1);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "rsaa %s: error: %s\n", chosen->get_name().c_str(), e.what());
+    // (printable: a file name or file text in the message may hold terminal escapes)
+    std::fprintf(stderr, "rsaa %s: error: %s\n", chosen->get_name().c_str(), rsaa::printable(e.what()).c_str());
     std::fflush(nullptr);
     // Leave at once: a scene loader that timed out may still be running on its own thread.
     std::_Exit(1);
