@@ -436,7 +436,11 @@ ImportedModel import_model(const std::string& path, ImportMeasurement* measureme
   // (an empty image and a table of no masks said nothing was wrong).
   if (!has_area(scene))
     throw std::runtime_error(what + ": no triangles to draw (all " + std::to_string(scene.indices.size() / 3) +
-                             " have zero area)");
+                             " have zero area" +
+                             (dropped ? "; " + std::to_string(dropped) + " more had non-finite or out-of-range "
+                                        "vertices, the first " + first_dropped
+                                      : "") +
+                             ")");
   if (dropped)
     std::fprintf(stderr, "rsaa: warning: %s: %zu triangle%s left out: a vertex not finite or out of range (the first %s)\n",
                  printable(what).c_str(), dropped, dropped == 1 ? "" : "s", first_dropped.c_str());

@@ -43,6 +43,9 @@ struct RsaaPass::Objects {
   gl::Program record_list_program, record_codes_program;
   GLint record_list_group[3] = {1, 1, 1};
   bool record_images = false;  // the record passes read the records as images
+  // The compute resolve reads the codes, normals and primitives as images (RSAA_CODE_IMAGES)
+  // where the driver's image and combined resource limits hold them, else as textures.
+  bool resolve_reads_images = false;
   // Jittered pre-pass: one per code texture; "records": one per subsample (its layers).
   std::vector<gl::Framebuffer> subsample_targets;
   gl::Buffer uniforms;  // RsaaUniformHead, then an ivec4 per subsample
@@ -465,6 +468,7 @@ RsaaFrame RsaaTargets::frame(const glm::mat4& inverse_projection) const {
 }
 
 SamplePattern query_gl_sample_pattern(int samples) {
+  gl::check_none_pending("query_gl_sample_pattern");  // (and a current context: else "at most 0 samples")
   GLint max_samples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   const auto renderer = [] {
@@ -764,8 +768,16 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     const std::string post_defines = defines + "#define RSAA_POST_FIRST_UNIT " + std::to_string(kColourUnit) + "\n" +
                                      list_defines;
     // The listing pass and the resolve read the integer targets as images: codes, normal,
-    // primitive from kFirstCodeImageUnit (2 + 4 + 2 units at 16 subsamples, GL's least maximum 8).
+    // primitive from kFirstCodeImageUnit (2 + 4 + 2 units at 16 subsamples, GL's least maximum 8),
+    // the resolve where its images and the list's storage block fit the driver's limits (GL's
+    // least combined maximum is 8 too: with 16 subsamples, the mask and material edges the
+    // resolve would need 9), else through textures, as before session 29.
     const std::string image_defines = "#define RSAA_CODE_IMAGES " + std::to_string(kFirstCodeImageUnit) + "\n";
+    GLint image_uniforms = 0, combined = 0;
+    glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_uniforms);
+    glGetIntegerv(GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES, &combined);
+    const int resolve_images = kFirstCodeImageUnit + int(gl_->codes.size()) + (settings.material_edges ? 2 : 1);
+    gl_->resolve_reads_images = resolve_images <= image_uniforms && resolve_images + 1 <= combined;
     gl_->classify_program = gl::make_program(
         {{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
         post_defines + image_defines, "RSAA post-process edge list");
@@ -774,7 +786,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
                                             post_defines + "#define RSAA_SCRATCH_UNIT " + std::to_string(kScratchUnit) + "\n",
                                             "RSAA post-process in place");
     gl_->list_resolve_program = gl::make_program({{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_resolve.comp")}},
-                                                 post_defines + image_defines,
+                                                 post_defines + (gl_->resolve_reads_images ? image_defines : ""),
                                                  "RSAA post-process resolve of the edge list");
   }
   gl::check("creating the RSAA pass");
@@ -1288,29 +1300,36 @@ std::vector<std::uint32_t> RsaaPass::edge_list_pixels() const {
   return pixels;
 }
 
-// Image stores into an incomplete texture are invalid (GL 4.5 section 8.26), and a texture made
-// with glTexImage2D keeps the default mipmap minifying filter: with one level it is incomplete.
-// Mesa stores all the same; a stricter driver would drop the resolved pixels. While the pass
-// stores into an engine texture, its minifying filter is one that needs no mipmaps; put back after.
 namespace {
-class CompleteForImageStores {
+// Image loads and stores of an incomplete texture are invalid (GL 4.5 section 8.26; loads give
+// 0), and completeness is then the texture's own state: one made with glTexImage2D keeps the
+// default mipmap minifying filter (with one level, incomplete), and an integer texture with a
+// linear filter is incomplete too. Mesa reads and stores all the same; a stricter driver would
+// drop the resolved pixels or read every engine normal as the background. While the pass uses an
+// engine texture as an image, its filters are ones it is complete with; put back after.
+class CompleteForImageAccess {
  public:
-  explicit CompleteForImageStores(GLuint texture) : texture_(texture) {
+  // `integer`: an integer format (both filters must be nearest).
+  CompleteForImageAccess(GLuint texture, bool integer) : texture_(texture) {
     if (texture_ == 0) return;
     glGetTextureParameteriv(texture_, GL_TEXTURE_MIN_FILTER, &min_filter_);
-    changed_ = min_filter_ != GL_NEAREST && min_filter_ != GL_LINEAR;
-    if (changed_) glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glGetTextureParameteriv(texture_, GL_TEXTURE_MAG_FILTER, &mag_filter_);
+    change_min_ = integer ? min_filter_ != GL_NEAREST : min_filter_ != GL_NEAREST && min_filter_ != GL_LINEAR;
+    change_mag_ = integer && mag_filter_ != GL_NEAREST;
+    if (change_min_) glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    if (change_mag_) glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
-  ~CompleteForImageStores() {
-    if (changed_) glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, min_filter_);
+  ~CompleteForImageAccess() {
+    if (change_min_) glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, min_filter_);
+    if (change_mag_) glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, mag_filter_);
   }
-  CompleteForImageStores(const CompleteForImageStores&) = delete;
-  CompleteForImageStores& operator=(const CompleteForImageStores&) = delete;
+  CompleteForImageAccess(const CompleteForImageAccess&) = delete;
+  CompleteForImageAccess& operator=(const CompleteForImageAccess&) = delete;
 
  private:
   GLuint texture_;
-  GLint min_filter_ = GL_NEAREST;
-  bool changed_ = false;
+  GLint min_filter_ = GL_NEAREST, mag_filter_ = GL_NEAREST;
+  bool change_min_ = false, change_mag_ = false;
 };
 
 // Where the compute post-process stores into a texture: the texture in its own format or, for an
@@ -1356,8 +1375,12 @@ class OutputImage {
 // the edge pass and depth test of "edges" still run the resolve for whole batches around each
 // edge pixel; here every lane holds one (README, *Cheaper post-processes*).
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
-  const CompleteForImageStores complete_output(output);
-  const CompleteForImageStores complete_mask(settings_.output_mask ? mask_output : 0);
+  const CompleteForImageAccess complete_output(output, false);
+  const CompleteForImageAccess complete_mask(settings_.output_mask ? mask_output : 0, true);
+  // The engine's integer targets the listing pass and the resolve read as images.
+  const CompleteForImageAccess complete_normal(frame.centre_normal, true);
+  const CompleteForImageAccess complete_primitive(
+      settings_.material_edges && gl_->resolve_reads_images ? frame.centre_primitive : 0, true);
   // The listing pass and the resolve read the codes, the centre normal and (material edges) the
   // centre primitive as images (RSAA_CODE_IMAGES).
   const int code_images = int(gl_->codes.size());

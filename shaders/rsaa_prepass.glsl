@@ -98,6 +98,18 @@ RsaaCentre rsaa_centre(ivec2 pixel) {
   return c;
 }
 
+// Whether a subsample of this primitive (and material) lies on the centre's triangle
+// (`centre_primitive`: the centre primitive target's texel); primitive 0 never does. With
+// material edges both must match: primitive ids repeated across draws must not hide a material
+// edge.
+bool rsaa_on_centres_triangle(uvec2 centre_primitive, uint primitive, uint material) {
+#ifdef RSAA_MATERIAL_EDGES
+  return primitive != 0u && centre_primitive == uvec2(primitive, material);
+#else
+  return primitive != 0u && centre_primitive.x == primitive;
+#endif
+}
+
 // The compressed similarity code of subsample `subsample` of `pixel` (whose centre is `centre`:
 // rsaa_centre(), read once for all of a pixel's subsamples by the record passes): how different
 // the surface it sees (view-space position and geometric normal) is from the surface at the pixel
@@ -110,12 +122,7 @@ RsaaCentre rsaa_centre(ivec2 pixel) {
 // similarity sees, are resampled.
 uint rsaa_subsample_code(RsaaCentre centre, ivec2 pixel, int subsample, vec3 view_position, vec3 view_face_normal,
                          uint primitive, uint material) {
-#ifdef RSAA_MATERIAL_EDGES
-  // Primitive ids repeated across draws must not hide a material edge: both must match.
-  if (primitive != 0u && centre.primitive == uvec2(primitive, material)) return 1u;  // decodes to 0
-#else
-  if (primitive != 0u && centre.primitive.x == primitive) return 1u;  // decodes to 0
-#endif
+  if (rsaa_on_centres_triangle(centre.primitive, primitive, material)) return 1u;  // decodes to 0
   // A surface subsample in a background pixel: different.
   if (!rsaa_is_surface(centre.normal)) return RSAA_CODE_MAX;
 #ifdef RSAA_MATERIAL_EDGES
@@ -144,10 +151,17 @@ uint rsaa_subsample_code(RsaaCentre centre, ivec2 pixel, int subsample, vec3 vie
   return rsaa_encode_similarity(similarity);
 }
 
+// The same, reading the centre itself, lazily: a fragment on the centre's triangle (most of
+// them) reads the centre's primitive only, as a GPU that branches per pixel can skip the rest.
 uint rsaa_subsample_code(ivec2 pixel, int subsample, vec3 view_position, vec3 view_face_normal, uint primitive,
                          uint material) {
-  return rsaa_subsample_code(rsaa_centre(pixel), pixel, subsample, view_position, view_face_normal, primitive,
-                             material);
+  RsaaCentre centre;
+  centre.primitive = texelFetch(rsaa_centre_primitive, pixel, 0).xy;
+  if (rsaa_on_centres_triangle(centre.primitive, primitive, material)) return 1u;
+  centre.normal = texelFetch(rsaa_centre_normal, pixel, 0).xy;
+  if (!rsaa_is_surface(centre.normal)) return RSAA_CODE_MAX;
+  centre.position = rsaa_centre_position(pixel);
+  return rsaa_subsample_code(centre, pixel, subsample, view_position, view_face_normal, primitive, material);
 }
 
 // ---- the multisample pre-pass's surface records (RSAA_PREPASS_MSAA): what a sample sees,

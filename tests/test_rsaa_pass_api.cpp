@@ -640,6 +640,14 @@ TEST_F(RsaaPassApi, TheFramesSamplingParametersAndAnEnginesSamplersDoNotReachThe
   }
   glTextureParameteri(frame.centre_depth, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   expect_same(clean, run(frame), "the textures' own parameters");
+  // The compute post-process reads the integer targets as images, for which a texture's own
+  // filters decide completeness: it sets nearest ones for the pass and puts the engine's back.
+  for (GLuint integer : {frame.centre_normal, frame.centre_primitive})
+    for (GLenum filter : {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER}) {
+      GLint value = 0;
+      glGetTextureParameteriv(integer, filter, &value);
+      EXPECT_EQ(value, GL_LINEAR) << "texture " << integer << " filter " << filter;
+    }
   for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glTextureParameteri(frame.colour, wrap, GL_CLAMP_TO_EDGE);
   for (GLuint integer : {frame.centre_normal, frame.centre_primitive}) {
     glTextureParameteri(integer, GL_TEXTURE_MIN_FILTER, GL_NEAREST);

@@ -403,7 +403,7 @@ TEST_F(RsaaPassMisuse, TheEnginesDepthStencilBufferIsTakenAsItIs) {
 }
 
 // Without a current context every GL call reads zeros: the pass said "this driver takes 1x1 to
-// 0x0" or "1 is not a texture". Every entry point now says that no context is current.
+// 0x0" or "1 is not a texture". The pass's calls now say that no context is current.
 TEST_F(RsaaPassMisuse, NoCurrentContextIsAnErrorSayingSo) {
   const test::SceneFrame scene("builtin:default", kWidth, kHeight);
   RsaaPass pass(RsaaSettings{}, kWidth, kHeight);
@@ -426,6 +426,7 @@ TEST_F(RsaaPassMisuse, NoCurrentContextIsAnErrorSayingSo) {
   expect_no_context([] { RsaaTargets targets(kWidth, kHeight); }, "RsaaTargets::RsaaTargets");
   expect_no_context([&] { pass.render_subsamples(scene.frame(), scene_draw(scene)); }, "RsaaPass::render_subsamples");
   expect_no_context([&] { pass.resolve(scene.frame(), output.get()); }, "RsaaPass::resolve");
+  expect_no_context([] { query_gl_sample_pattern(4); }, "query_gl_sample_pattern");
   ASSERT_TRUE(eglMakeCurrent(display, draw, read, context));
   // And the pass works again once it is current.
   EXPECT_GT(masks_of(pass, scene.frame(), scene_draw(scene)).size(), 0u);

@@ -108,8 +108,10 @@ int main(int argc, char** argv) {
     std::fflush(nullptr);
     std::_Exit(1);
   } catch (const std::exception& e) {
-    // (printable: a file name or file text in the message may hold terminal escapes)
-    std::fprintf(stderr, "rsaa %s: error: %s\n", chosen->get_name().c_str(), rsaa::printable(e.what()).c_str());
+    // (printable: a file name or file text in the message may hold terminal escapes; a driver's
+    // compile log keeps its lines)
+    std::fprintf(stderr, "rsaa %s: error: %s\n", chosen->get_name().c_str(),
+                 rsaa::printable(e.what(), true).c_str());
     std::fflush(nullptr);
     // Leave at once: a scene loader that timed out may still be running on its own thread.
     std::_Exit(1);
