@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/rsaa/offset_table.h"
+#include "core/util/printable.h"
 #include "tests/test_util.h"
 
 namespace rsaa {
@@ -160,6 +161,21 @@ TEST(OffsetTableFiles, MissingFileAndUnwritableDirectoryAreClearErrors) {
                           std::filesystem::directory_iterator()),
             3);  // no temporaries left behind
   EXPECT_EQ(read_offset_table(paths[0]).offsets[3], small_table().offsets[3]);
+}
+
+// Text from files printed or written into comments: C0 and C1 controls escaped, UTF-8 kept, a
+// newline kept only where asked (an error's compile log), nothing escaped twice.
+TEST(Printable, EscapesControlsAndKeepsUtf8) {
+  EXPECT_EQ(printable("plain text: a/b c.json"), "plain text: a/b c.json");
+  EXPECT_EQ(printable("a\nb\tc\x1b[2J\x7f"), "a\\x0ab\\x09c\\x1b[2J\\x7f");
+  EXPECT_EQ(printable("a\nb\tc\r", true), "a\nb\tc\\x0d");
+  EXPECT_EQ(printable("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82"), "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x99\x82");
+  EXPECT_EQ(printable("\xc2\x9b" "1m"), "\\xc2\\x9b1m");      // U+009B, CSI
+  EXPECT_EQ(printable("\x9b" "1m"), "\\x9b1m");                // a lone C1 byte
+  EXPECT_EQ(printable("\xc3"), "\\xc3");                        // a cut sequence
+  EXPECT_EQ(printable("\xc2\xa0"), "\xc2\xa0");                // U+00A0 stays
+  const std::string once = printable("x\x1b\x9b\n");
+  EXPECT_EQ(printable(once), once);
 }
 
 }  // namespace
