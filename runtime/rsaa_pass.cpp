@@ -126,6 +126,8 @@ constexpr GLint kRecordListEdgesLocation = 1;  // rsaa_prepass_records.glsl's rs
 // The compute post-process's image units for what it reads (RSAA_CODE_IMAGES): the code textures
 // from kFirstCodeImageUnit on, then the centre normal, then (material edges) the centre primitive.
 constexpr int kFirstCodeImageUnit = 2;
+// How many of those: the code textures, the normal and, with material edges, the primitive.
+int post_read_images(int code_textures, bool material_edges) { return code_textures + (material_edges ? 2 : 1); }
 // The record passes of the multisample pre-pass write the codes through the same image units.
 constexpr GLint kRecordRowsLocation = 0;
 // The record passes' four texture units (records and depths of each draw): 0-3, or after the
@@ -776,7 +778,7 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     GLint image_uniforms = 0, combined = 0;
     glGetIntegerv(GL_MAX_COMPUTE_IMAGE_UNIFORMS, &image_uniforms);
     glGetIntegerv(GL_MAX_COMBINED_SHADER_OUTPUT_RESOURCES, &combined);
-    const int resolve_images = kFirstCodeImageUnit + int(gl_->codes.size()) + (settings.material_edges ? 2 : 1);
+    const int resolve_images = kFirstCodeImageUnit + post_read_images(int(gl_->codes.size()), settings.material_edges);
     gl_->resolve_reads_images = resolve_images <= image_uniforms && resolve_images + 1 <= combined;
     gl_->classify_program = gl::make_program(
         {{GL_COMPUTE_SHADER, gl::shader_source("rsaa_post_classify.comp")}},
@@ -1377,16 +1379,14 @@ class OutputImage {
 void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint mask_output) {
   const CompleteForImageAccess complete_output(output, false);
   const CompleteForImageAccess complete_mask(settings_.output_mask ? mask_output : 0, true);
-  // The engine's integer targets the listing pass and the resolve read as images.
+  // The listing pass and the resolve read the codes and the engine's centre normal as images, the
+  // resolve (where it reads images) the centre primitive too (RSAA_CODE_IMAGES).
+  const bool primitive_image = settings_.material_edges && gl_->resolve_reads_images;
   const CompleteForImageAccess complete_normal(frame.centre_normal, true);
-  const CompleteForImageAccess complete_primitive(
-      settings_.material_edges && gl_->resolve_reads_images ? frame.centre_primitive : 0, true);
-  // The listing pass and the resolve read the codes, the centre normal and (material edges) the
-  // centre primitive as images (RSAA_CODE_IMAGES).
+  const CompleteForImageAccess complete_primitive(primitive_image ? frame.centre_primitive : 0, true);
   const int code_images = int(gl_->codes.size());
-  const int read_images = code_images + (settings_.material_edges ? 2 : 1);
   std::vector<int> image_units = {kOutputImageUnit, kMaskImageUnit};
-  for (int k = 0; k < read_images; ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  for (int k = 0; k < post_read_images(code_images, primitive_image); ++k) image_units.push_back(kFirstCodeImageUnit + k);
   const gl::SavedComputeState saved({kEdgeListBinding}, image_units);
   // The rows listed per round: all of them unless the list cannot hold every pixel (then the
   // list is filled and resolved again for each band of rows).
@@ -1420,7 +1420,7 @@ void RsaaPass::resolve_edge_list(const RsaaFrame& frame, GLuint output, GLuint m
                        GL_READ_ONLY, code_format(settings_.code_bits));
   glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images), frame.centre_normal, 0, GL_FALSE, 0, GL_READ_ONLY,
                      GL_RG16UI);
-  if (settings_.material_edges)
+  if (primitive_image)
     glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + 1), frame.centre_primitive, 0, GL_FALSE, 0,
                        GL_READ_ONLY, GL_RG32UI);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->edge_list.get());
