@@ -31,6 +31,9 @@ struct RsaaTargets::Objects {
 struct RsaaPass::Objects {
   std::vector<gl::Texture> codes;  // four subsamples per texel (RGBA), ceil(n / 4) textures
   gl::Texture subsample_depth, table;
+  // Borrowed colours (RsaaSettings::multi_surface "borrow", with records): per pixel a byte a
+  // subsample, the pixel whose centre shows its surface (shaders/rsaa_prepass_records.glsl).
+  gl::Texture sources;
   // The pre-passes that write surface records: the records (RG32UI; with material edges the
   // material packed in) and depths, sample i (multisample) or layer i (RsaaSettings::prepass
   // "records") = subsample i; the record passes turn them into `codes`.
@@ -117,7 +120,8 @@ constexpr int kColourUnit = 0, kNormalUnit = 1, kDepthUnit = 2, kTableUnit = 3, 
               kPrimitiveUnit = 8;
 // The in-place resolve's scratch image, read by the copy into the colour (rsaa_post_scatter.comp).
 constexpr int kScratchUnit = 9;
-constexpr int kPostUnits = 10;
+constexpr int kSourcesUnit = 10;  // rsaa_post.glsl's rsaa_post_sources (borrowed colours)
+constexpr int kPostUnits = 11;
 // The compute post-process's shader storage binding (the edge list) and image units (output, mask).
 constexpr int kEdgeListBinding = 0, kOutputImageUnit = 0, kMaskImageUnit = 1;
 // The record passes' lists: the pixels to code at kEdgeListBinding, the post-process's edge list here.
@@ -135,6 +139,16 @@ constexpr GLint kRecordRowsLocation = 0;
 constexpr int kRecordUnits = 4;
 // The record passes' image units for the records, one per draw (rsaa_record_images[2]).
 constexpr int kRecordImages = 2;
+// The codes pass's image unit for the sources it writes (borrowed colours): one the record passes
+// leave free (the post-process's output unit).
+constexpr int kSourcesImageUnit = 0;
+// The sources' format: a byte a subsample, four to a channel.
+GLenum sources_format(int sample_count) {
+  return sample_count <= 4 ? GL_R32UI : sample_count <= 8 ? GL_RG32UI : GL_RGBA32UI;
+}
+const char* sources_image_format(int sample_count) {
+  return sample_count <= 4 ? "r32ui" : sample_count <= 8 ? "rg32ui" : "rgba32ui";
+}
 // What the pre-passes that write records keep per subsample and pixel: a surface record (RG32UI)
 // and a 32-bit depth.
 constexpr double kRecordBytesPerSubsample = 8.0 + 4.0;
@@ -538,8 +552,9 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
                                 "' is not one of sadp, depth, sadp-plane");
   if (!(settings.split_cap == 0.0f || (settings.split_cap >= 1.0f && std::isfinite(settings.split_cap))))
     throw std::invalid_argument("RSAA split_cap must be 0 (the paper's split) or a finite number >= 1");
-  if (settings.multi_surface != "fetch" && settings.multi_surface != "neighbours")
-    throw std::invalid_argument("RSAA multi_surface must be fetch or neighbours, not '" + settings.multi_surface + "'");
+  if (settings.multi_surface != "fetch" && settings.multi_surface != "neighbours" && settings.multi_surface != "borrow")
+    throw std::invalid_argument("RSAA multi_surface must be fetch, neighbours or borrow, not '" + settings.multi_surface +
+                                "'");
   if (settings.split_check != "off" && settings.split_check != "neighbours")
     throw std::invalid_argument("RSAA split_check must be off or neighbours, not '" + settings.split_check + "'");
   if (settings.fetch_check != "off" && settings.fetch_check != "neighbours")
@@ -554,7 +569,12 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
     if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
     defines += "#define RSAA_SPLIT_CAP " + literal + "\n";
   }
-  if (settings.multi_surface == "neighbours") defines += "#define RSAA_MULTI_SURFACE_NEIGHBOURS\n";
+  if (settings.multi_surface != "fetch") defines += "#define RSAA_MULTI_SURFACE_NEIGHBOURS\n";
+  // Borrowed colours need the subsamples' surfaces, which only the pre-passes writing records keep:
+  // with the jittered pre-pass "borrow" resolves as "neighbours".
+  if (settings.multi_surface == "borrow" && (multisample_prepass || settings.prepass == "records"))
+    defines += std::string("#define RSAA_MULTI_SURFACE_BORROW\n#define RSAA_SOURCES_FORMAT ") +
+               sources_image_format(sample_count) + "\n";
   if (settings.split_check == "neighbours") defines += "#define RSAA_SPLIT_CHECK_NEIGHBOURS\n";
   if (settings.fetch_check == "neighbours") defines += "#define RSAA_FETCH_CHECK_NEIGHBOURS\n";
   if (settings.material_edges) defines += "#define RSAA_MATERIAL_EDGES\n";
@@ -570,7 +590,7 @@ int rsaa_record_first_unit(int prepass_first_unit) {
 }
 
 std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_record_unit, int first_code_image,
-                                     int list_binding) {
+                                     int list_binding, int sources_image) {
   std::string windows;
   for (const Vec2& position : pattern.positions) {  // window space, from the pixel's lower-left corner
     const Vec2 gl = pixel_to_gl(position);
@@ -580,7 +600,8 @@ std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_rec
   }
   return "#define RSAA_LIST_BINDING " + std::to_string(list_binding) + "\n#define RSAA_RECORD_FIRST_UNIT " +
          std::to_string(first_record_unit) + "\n#define RSAA_RECORD_CODE_IMAGES " + std::to_string(first_code_image) +
-         "\n#define RSAA_SUBSAMPLE_WINDOWS vec2[](" + windows + ")\n";
+         "\n#define RSAA_SUBSAMPLE_WINDOWS vec2[](" + windows + ")\n#define RSAA_RECORD_SOURCES_IMAGE " +
+         std::to_string(sources_image) + "\n";
 }
 
 RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
@@ -666,6 +687,11 @@ RsaaPass::RsaaPass(const RsaaSettings& settings, int width, int height)
     settings_.prepass = "records";  // the shaders' defines (rsaa_shader_defines) follow it
   }
   for (int k = 0; k < (n + 3) / 4; ++k) gl_->codes.push_back(gl::make_texture_2d(code_format(settings.code_bits), width, height));
+  if (borrows()) {
+    gl_->sources = gl::make_texture_2d(sources_format(n), width, height);
+    const GLuint none[4] = {0, 0, 0, 0};  // (the codes pass writes every pixel the post-process reads)
+    glClearTexImage(gl_->sources.get(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, none);
+  }
   if (multisample_) {
     const int m = raster_samples();
     const glm::ivec2 raster = raster_size();
@@ -802,6 +828,7 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
     bytes += n * kRecordBytesPerSubsample;  // (both draws of a union)
   else
     bytes += cull_ ? 8.0 : 4.0;  // the draws' depth (+ stencil)
+  if (borrows()) bytes += n <= 4 ? 4.0 : n <= 8 ? 8.0 : 16.0;  // the sources (sources_format)
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
   const int lists = (settings_.post == "compute" ? 1 : 0) + (writes_records() ? 1 : 0);  // (edges, pixels to code)
   bytes += lists * double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);
@@ -818,7 +845,9 @@ std::string RsaaPass::prepass_description() const {
   const int n = pattern_.size();
   const std::string draws = std::to_string(n) + (n == 1 ? " jittered draw" : " jittered draws");
   if (layered_) return "records, " + draws + " writing surface records";
-  if (!multisample_) return "jittered, " + draws + (cull_ ? " behind the neighbourhood culling" : "");
+  if (!multisample_)
+    return "jittered, " + draws + (cull_ ? " behind the neighbourhood culling" : "") +
+           (settings_.multi_surface == "borrow" ? " (no borrowed colours: it keeps no subsample's surface)" : "");
   const std::string samples = std::to_string(raster_samples()) + "-sample draw";
   if (union_) return "msaa, two " + samples + "s (a union pattern)";
   if (cells_ == glm::ivec2(1, 1)) return "msaa, one " + samples;
@@ -854,7 +883,7 @@ void RsaaPass::write_frame_uniforms(const RsaaFrame& frame) const {
 void RsaaPass::make_record_programs(bool record_images) {
   std::string defines = rsaa_shader_defines(settings_, pattern_.size(), multisample_, union_, cells_) +
                         rsaa_record_pass_defines(pattern_, record_first_unit(settings_.prepass_first_unit),
-                                                 kFirstCodeImageUnit, kEdgeListBinding);
+                                                 kFirstCodeImageUnit, kEdgeListBinding, kSourcesImageUnit);
   if (settings_.post == "compute") defines += "#define RSAA_EDGE_LIST_BINDING " + std::to_string(kRecordEdgeListBinding) + "\n";
   gl_->record_images = record_images;
   if (record_images)
@@ -877,6 +906,7 @@ void RsaaPass::codes_from_records() {
   const int record_units = union_ ? kRecordUnits : 2;
   std::vector<int> image_units, units;
   for (int k = 0; k < code_images + (gl_->record_images ? kRecordImages : 0); ++k) image_units.push_back(kFirstCodeImageUnit + k);
+  if (borrows()) image_units.push_back(kSourcesImageUnit);
   for (int k = 0; k < record_units; ++k) units.push_back(record_unit + k);
   const gl::SavedState saved(units);
   const gl::SavedComputeState saved_compute({kEdgeListBinding, kRecordEdgeListBinding}, image_units);
@@ -893,6 +923,8 @@ void RsaaPass::codes_from_records() {
     for (int d = 0; d < (union_ ? 2 : 1); ++d)
       glBindImageTexture(GLuint(kFirstCodeImageUnit + code_images + d), records[2 * d], 0, layered, 0, GL_READ_ONLY,
                          GL_RG32UI);
+  if (borrows())
+    glBindImageTexture(kSourcesImageUnit, gl_->sources.get(), 0, GL_FALSE, 0, GL_WRITE_ONLY, sources_format(pattern_.size()));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, gl_->record_list.get());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, gl_->record_list.get());
   // Rounds of rows when the list cannot hold every pixel, as the compute post-process does. In one
@@ -1228,6 +1260,7 @@ void RsaaPass::resolve(const RsaaFrame& frame, GLuint output, GLuint mask_output
   glBindTextureUnit(kTableUnit, gl_->table.get());
   for (std::size_t k = 0; k < gl_->codes.size(); ++k) glBindTextureUnit(GLuint(kFirstCodeUnit + k), gl_->codes[k].get());
   if (settings_.material_edges) glBindTextureUnit(kPrimitiveUnit, frame.centre_primitive);
+  if (borrows()) glBindTextureUnit(kSourcesUnit, gl_->sources.get());
   if (settings_.post == "compute") {
     resolve_edge_list(frame, output, mask_output);
     gl::check("RSAA post-process");

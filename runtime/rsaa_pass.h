@@ -174,7 +174,14 @@ struct RsaaSettings {
   // subsamples point at outside pixels showing two different surfaces (3+ surfaces in the pixel)
   // is resolved as the mean over its subsamples, each dissimilar one taking its outside pixel's
   // colour (up to one texel fetch per subsample there); other pixels fetch as the paper.
-  std::string multi_surface = "neighbours";
+  // "borrow" (the default): as "neighbours", and the record passes find for each subsample above
+  // the threshold the pixel within two whose centre shows its surface (its triangle, else a
+  // similar plane of its material); where such a pixel lies beyond the 3x3 (a bar or wire thinner
+  // than a pixel, crossing between pixel centres) or the pixel holds 3+ surfaces, the mean over
+  // the subsamples takes each dissimilar one's colour from it (README "Borrowed colours"). Needs a
+  // pre-pass that writes records (msaa, records; auto's choice within its budget): with the
+  // jittered pre-pass it resolves as "neighbours" (prepass_description() says so).
+  std::string multi_surface = "borrow";
   // "off": the k-means split decides (the paper). "neighbours": a subsample above the threshold
   // that the split calls similar turns dissimilar when the outside pixel in its direction shows a
   // surface about as different from the centre (within a factor 1.5; one neighbour read per such
@@ -288,10 +295,11 @@ int rsaa_record_first_unit(int prepass_first_unit);
 // The #define lines the multisample pre-pass's record passes (shaders/rsaa_prepass_list.comp,
 // rsaa_prepass_codes.comp) need beside rsaa_shader_defines(): their resources (texture units from
 // `first_record_unit`: records, depths, the union's second draw's; code images
-// from `first_code_image`; the pixel list at storage binding `list_binding`) and where each
-// subsample's point lies in its pixel. Needs no GL.
+// from `first_code_image`; the pixel list at storage binding `list_binding`; with borrowed
+// colours the sources image at unit `sources_image`, read by the post-process at its unit
+// RSAA_POST_FIRST_UNIT + 10) and where each subsample's point lies in its pixel. Needs no GL.
 std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_record_unit, int first_code_image,
-                                     int list_binding);
+                                     int list_binding, int sources_image = 0);
 // A file of shaders/ ("rsaa_prepass.glsl", "rsaa_post.glsl", "rsaa_post.hlsl", ...) with its
 // #include lines replaced by the included text: one self-contained text. Needs no GL.
 std::string rsaa_shader_file(const std::string& name);
@@ -428,6 +436,8 @@ class RsaaPass {
   bool layered_ = false;  // settings.prepass == "records": jittered draws writing surface records
   // The pre-pass writes surface records that the record passes turn into codes.
   bool writes_records() const { return multisample_ || layered_; }
+  // Borrowed colours in use: asked for, and a pre-pass that keeps the subsamples' surfaces.
+  bool borrows() const { return settings_.multi_surface == "borrow" && writes_records(); }
   bool cull_ = false;    // settings.prepass_cull == "neighbours"
   Vec2 union_shift_{};   // the second draw's shift, pixel space (+y down)
   // The multisample draw's raster pixels a pixel (columns, rows): 1 x 1, or a cell pattern's.

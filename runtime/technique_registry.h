@@ -27,7 +27,7 @@ struct TechniqueOptions {
   std::string prepass = "auto";      // rsaa: auto | jittered | msaa (RsaaSettings::prepass)
   std::string prepass_cull = "off";  // rsaa: off | neighbours (RsaaSettings::prepass_cull)
   double split_cap = 1.5;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
-  std::string multi_surface = "neighbours";  // rsaa: neighbours (default) | fetch (the paper's)
+  std::string multi_surface = "borrow";  // rsaa: borrow (default) | neighbours | fetch (the paper's)
   std::string split_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string fetch_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string material_edges = "on";         // rsaa: on (default: the renderer knows each draw's

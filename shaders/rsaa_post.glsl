@@ -11,6 +11,11 @@
 //   RSAA_SPLIT_CAP           (optional) cap of the k-means split, x threshold (rsaa_common.glsl)
 //   RSAA_MULTI_SURFACE_NEIGHBOURS  (optional) pixels whose dissimilar subsamples point at two
 //                            different surfaces: a sample average from the neighbours (below)
+//   RSAA_MULTI_SURFACE_BORROW  (optional, with RSAA_MULTI_SURFACE_NEIGHBOURS; the pre-passes that
+//                            write records) the sources the record passes found (unit
+//                            RSAA_POST_FIRST_UNIT + 10): where a subsample's surface is shown only
+//                            beyond the 3x3, or the pixel holds 3+ surfaces, the sample average
+//                            takes each dissimilar subsample's colour from the pixel showing it
 //   RSAA_SPLIT_CHECK_NEIGHBOURS  (optional) a subsample above the threshold that the split calls
 //                            similar turns dissimilar when its outside pixel shows a like surface
 //   RSAA_FETCH_CHECK_NEIGHBOURS  (optional) a pixel none of whose dissimilar subsamples finds a like
@@ -27,7 +32,7 @@
 //                            (README, *Cheaper post-processes*); the depth and colour stay textures
 //   RSAA_POST_FIRST_UNIT     (0) texture units, in order: colour, centre normal, centre depth,
 //                            table, the code textures (ceil(RSAA_SAMPLE_COUNT / 4) units from
-//                            + 4), the centre primitive at + 8
+//                            + 4), the centre primitive at + 8, the sources at + 10
 //   RSAA_UNIFORM_BINDING     (13) the uniform block (rsaa_uniforms.glsl)
 //
 // The table texture (RGBA32F, min(masks, 256) x ceil(masks / 256)): texel (mask % 256, mask / 256) holds the
@@ -221,6 +226,50 @@ bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, ivec2 other, uvec2 other_nor
   return similarity > rsaa_threshold;
 }
 
+#ifdef RSAA_MULTI_SURFACE_BORROW
+// The sources (rsaa_prepass_records.glsl, rsaa_borrow_source()): byte i % 4 of channel i / 4 is
+// subsample i's, 0 for none, else 1 + (dy + 2) * 5 + (dx + 2) for the pixel (dx, dy) away (window
+// space) whose centre shows the subsample's surface.
+layout(binding = RSAA_POST_FIRST_UNIT + 10) uniform usampler2D rsaa_post_sources;
+
+// Borrowed colours (ours, RsaaSettings::multi_surface = "borrow"): the mean over the subsamples,
+// a similar one taking the centre's colour and a dissimilar one the colour of the pixel the record
+// passes found showing its surface (else its outside pixel's where that shows another surface
+// than the centre, else the centre's), where one such pixel lies beyond the 3x3 (a sliver whose
+// surface the neighbours do not show: a thin bar, a wire crossing between pixel centres) or the
+// pixel holds 3+ surfaces (`three`, as rsaa_multi_surface() tells it). `outside`: the dissimilar
+// subsamples whose outside pixel shows another surface than the centre. Returns false (the
+// caller fetches as usual) for every other pixel.
+bool rsaa_borrow(ivec2 pixel, vec4 colour, uint mask, bool three, uint outside, RsaaOutside o, out vec4 resolved) {
+  resolved = colour;
+  uvec4 sources = texelFetch(rsaa_post_sources, pixel, 0);
+  ivec2 last = ivec2(rsaa_viewport) - 1;
+  ivec2 source[RSAA_SAMPLE_COUNT];
+  bool far = false;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    uint index = (sources[i / 4] >> uint(8 * (i % 4))) & 255u;
+    source[i] = pixel;
+    if ((mask & (1u << i)) != 0u) continue;
+    if (index != 0u && index <= 25u) {
+      ivec2 step = ivec2(int(index - 1u) % 5, int(index - 1u) / 5) - 2;
+      source[i] = clamp(pixel + step, ivec2(0), last);
+      far = far || max(abs(step.x), abs(step.y)) > 1;
+    } else if ((outside & (1u << i)) != 0u) {
+      source[i] = o.pixel[i];
+    }
+  }
+  if (!far && !three) return false;
+  vec3 sum = vec3(0.0);  // in subsample order, as the other resolves
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) {
+    vec3 fetched = source[i] == pixel ? colour.rgb : texelFetch(rsaa_colour, source[i], 0).rgb;
+    // As the fetch path: a NaN or infinite neighbour never spreads into this pixel.
+    sum += !any(isnan(fetched)) && !any(isinf(fetched)) ? fetched : colour.rgb;
+  }
+  resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
+  return true;
+}
+#endif
+
 // Multi-surface resolve (ours, RsaaSettings::multi_surface = "neighbours"). One bilinear fetch
 // blends the centre with neighbours of one quadrant, which suits two surfaces. When the outside
 // pixels nearest the dissimilar subsamples (rsaa_neighbours) show two surfaces that differ from
@@ -242,7 +291,11 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
     if (differs) outside |= 1u << i;
     if (differs && first < 0) first = i;
   }
+#ifdef RSAA_MULTI_SURFACE_BORROW
+  if (first < 0) return rsaa_borrow(pixel, colour, mask, false, outside, o, resolved);
+#else
   if (first < 0) return false;
+#endif
   ivec2 first_pixel = o.pixel[first];
   uvec2 first_normal = o.normal[first];
   vec3 first_position = o.position[first], first_decoded = rsaa_decode_normal(first_normal);
@@ -256,6 +309,9 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
                                       o.position[i], rsaa_decode_normal(o.normal[i]));
     three = three || rsaa_centres_differ(first_pixel, first_normal, o.pixel[i], o.normal[i], t);
   }
+#ifdef RSAA_MULTI_SURFACE_BORROW
+  return rsaa_borrow(pixel, colour, mask, three, outside, o, resolved);
+#else
   if (!three) return false;
   // The mean over the subsamples: a similar one takes the centre's colour, a dissimilar one the
   // colour of its outside pixel where that pixel shows another surface.
@@ -274,6 +330,7 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   for (; next < RSAA_SAMPLE_COUNT; ++next) sum += colour.rgb;
   resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
   return true;
+#endif
 }
 #endif
 

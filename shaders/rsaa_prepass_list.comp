@@ -1,6 +1,7 @@
 // The multisample pre-pass's first record pass (rsaa_prepass_records.glsl): per pixel, the codes
 // its records tell alone, and the pixel listed when a sample lies on another triangle than the
-// centre's (or another material, with material edges); a pixel not listed, whose codes are
+// centre's (or another material, with material edges; with borrowed colours also a surface pixel
+// with a sample on the background, whose sources the codes pass finds); a pixel not listed, whose codes are
 // final, goes to the post-process's edge list when they make an edge (RSAA_EDGE_LIST_BINDING).
 #include "rsaa_prepass_records.glsl"
 
@@ -22,6 +23,12 @@ void main() {
     if (!rsaa_record_is_surface(record)) codes[i] = 0u;
     else if (!rsaa_record_on_centres_triangle(record, centre_surface)) listed = true;
   }
+#ifdef RSAA_MULTI_SURFACE_BORROW
+  // A surface pixel with a sample on the background is an edge: the codes pass finds its sources.
+  bool uncovered = false;
+  for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) uncovered = uncovered || codes[i] == 0u;
+  if (!listed && uncovered) listed = rsaa_is_surface(texelFetch(rsaa_centre_normal, pixel, 0).xy);
+#endif
   rsaa_store_codes(pixel, codes);
   if (!listed) {  // these codes are final (0 or 1)
     rsaa_list_if_edge(pixel, codes);

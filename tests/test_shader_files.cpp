@@ -364,6 +364,11 @@ TEST(GeneratedShaders, ThePrePassesWritingRecordsComeWithTheirRecordPasses) {
                                          "void main() { o = rsaa_prepass_code(vec3(1.0), vec3(0.0, 0.0, 1.0), 1u" +
                                          (std::string(material_edges) == "on" ? ", 3u" : "") + "); }\n"),
               "");
+    // Borrowed colours (the default): the codes pass writes the sources, the GLSL post-process reads them.
+    EXPECT_NE(test::read_text(dir.file("out/rsaa_prepass_codes.comp")).find("imageStore(rsaa_source_image"), std::string::npos);
+    const std::string post = test::read_text(dir.file("out/rsaa_post.frag"));
+    EXPECT_NE(post.find("#define RSAA_MULTI_SURFACE_BORROW"), std::string::npos);
+    EXPECT_EQ(glslang_errors("frag", post), "");
     const auto hlsl = test::run_command("glslangValidator -D -V -S frag -e RsaaPostPS -o " + dir.file("p.spv") + " " +
                                         dir.file("out/rsaa_post.hlsl"));
     EXPECT_EQ(hlsl.exit_code, 0) << hlsl.output;
@@ -434,6 +439,9 @@ TEST_F(GeneratedShadersOnGl, ThePostFragmentWithItsTableInlinedGivesThePassImage
     RsaaSettings settings;
     settings.auth = 1;
     settings.material_edges = material_edges;
+    // The files' pre-pass (the defaults': jittered), whose codes alone the post-process reads:
+    // borrowed colours, the default, resolve as "neighbours" there.
+    settings.prepass = "jittered";
     const ResolvedScene resolved(settings, kWidth, kHeight, material_edges ? "builtin:coplanar" : "builtin:default");
     const View& view = resolved.scene.view;
     const RsaaFrame& frame = resolved.frame;

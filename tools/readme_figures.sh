@@ -14,8 +14,8 @@
 #   --only diagnosis: just the rsaa diagnose steps (about 6 minutes).
 #   --only coverage: just the coverage family's goals and scale tests (about 30 minutes).
 #   --only goals: just RSAA's goals (issue 11) on the bench scenes and held-out models, facet
-#            edges on them and on 53 surveyed models (about 40 minutes: the last two steps took
-#            580 and 733 s in session 26).
+#            edges and borrowed colours on them, and 53 surveyed models (about 50 minutes: the
+#            facet-edges and survey steps took 580 and 733 s in session 26).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -95,38 +95,38 @@ papers_figures() {
 cost_steps() {
   step "post-process at 1280x720" post-1280.md
   $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-    --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe edges-pass,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me fe" \
+    --techniques "fxaa,msaa 4x,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe edges-pass,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe single-pass,rsaa 4x gl4x sadp-plane auth1 cap1.5 mb sc fc me fe" \
     --out-dir "$out/post-1280" >"$out/post-1280.md"
   step "the culled pre-pass at 1280x720" prepass-cull.md
   $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj,builtin:fence" \
     --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-    --techniques "rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe cull" \
+    --techniques "rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 jittered cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe cull" \
     --out-dir "$out/prepass-cull" >"$out/prepass-cull.md"
   step "multisample pre-pass and the union pattern (8 subsamples as two 4x draws)" prepass-union.md
   { for t in custom-gl4x-union d3d8x gl4x; do $rsaa eval-table tables/$t.json 2>/dev/null; done
     $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" \
-      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me fe" \
+      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 jittered cap1.5 mb sc fc me fe" \
       --table tables/custom-gl4x-union.json --table-prepass both --out-dir "$out/prepass-union"; } >"$out/prepass-union.md"
   step "cell patterns: 8 (16) subsamples from one 4x draw at twice the height (and width), what RSAA adds" cell-patterns-cost.md
   { $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" --orbit-frames 2 \
-      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe" \
+      --techniques "msaa 4x,rsaa 4x gl4x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe" \
       --table tables/custom-gl4x-tall.json --out-dir "$out/cell-patterns-cost"
     $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe" --table tables/custom-gl4x-tall.json \
+      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe" --table tables/custom-gl4x-tall.json \
       --out-dir "$out/cell-patterns-cost-1280"
-    $rsaa bench --growth --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe" \
+    $rsaa bench --growth --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe" \
       --table tables/custom-gl4x-tall.json --out-dir "$out/cell-patterns-growth"
     # 16 subsamples from one 4x draw at twice the width and height.
     $rsaa bench --scenes "builtin:default,$engine,$truck,/usr/share/assimp/models/OBJ/spider.obj" --orbit-frames 2 \
-      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe" --table tables/custom-gl4x-quad.json \
+      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe" --table tables/custom-gl4x-quad.json \
       --out-dir "$out/cell-patterns-cost-quad"
     $rsaa bench --scenes builtin:default --width 1280 --height 720 --frames 3 --orbit-frames 2 \
-      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe" --table tables/custom-gl4x-quad.json \
+      --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe" --table tables/custom-gl4x-quad.json \
       --out-dir "$out/cell-patterns-cost-quad-1280"; } >"$out/cell-patterns-cost.md"
   cp "$out/cell-patterns-growth/growth-lights.png" docs/images/cell_patterns_lights.png
   step "how cost grows: image size, triangles, lights" growth.md
   $rsaa bench --growth --out-dir "$out/growth" \
-    --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth1 jittered cap1.5 ms sc fc me fe,rsaa 8x sadp-plane auth0" \
+    --techniques "fxaa,msaa 4x,ssaa 8x,dyncov,dcaa,agaa 8x,rsaa 4x gl4x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 4x gl4x sadp-plane auth1 jittered cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth1 jittered cap1.5 mb sc fc me fe,rsaa 8x sadp-plane auth0" \
     --table tables/custom-gl4x-union.json --table-prepass msaa >"$out/growth.md"
   for axis in pixels triangles lights; do cp "$out/growth/growth-$axis.png" "docs/images/growth_$axis.png"; done
   step "bench" bench.md
@@ -194,24 +194,20 @@ coverage_steps() {
 # RSAA's goals (issue 11) on the bench scenes, the coplanar scene and held-out models, with what the
 # latest default (material edges) changed; crops of the coplanar scene.
 goals_steps() {
+  # The goals' 25 scenes: the bench's, the coplanar scene and 14 held-out models.
+  local goal_scenes=(builtin:default builtin:grazing builtin:edges builtin:star builtin:fence builtin:distant
+    builtin:interpenetrating builtin:coplanar "$engine" "$truck" $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj
+    $models/3DS/fels.3ds $models/Collada/duck.dae $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d
+    $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o $models/COB/dwarf.cob $models/X/BCN_Epileptic.X
+    $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob $models/Ogre/TheThing/Mesh.mesh.xml
+    $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf)
   step "RSAA's goals, material edges off -> on" rsaa-goals.md
-  bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges off" builtin:default \
-    builtin:grazing builtin:edges builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar \
-    "$engine" "$truck" $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj $models/3DS/fels.3ds $models/Collada/duck.dae \
-    $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o \
-    $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
-    $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
+  bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals" --without "--material-edges off" "${goal_scenes[@]}" \
     >"$out/rsaa-goals.md"
   bash tools/crops.sh "$out/rsaa-goals/coplanar" 120x90+190+130 docs/images/coplanar_crops.png \
     noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
   step "cell patterns against d3d8x, the union and d3d16x (images, line cases)" cell-patterns.md
-  bash tools/cell_patterns.sh --out-dir "$out/cell-patterns" builtin:default builtin:grazing builtin:edges \
-    builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar "$engine" "$truck" \
-    $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj $models/3DS/fels.3ds $models/Collada/duck.dae \
-    $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o \
-    $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
-    $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
-    >"$out/cell-patterns.md"
+  bash tools/cell_patterns.sh --out-dir "$out/cell-patterns" "${goal_scenes[@]}" >"$out/cell-patterns.md"
   step "cell patterns: the README's summary (from cell-patterns.md)" cell-patterns-summary.md
   bash tools/cell_patterns_summary.sh "$out/cell-patterns/cell-patterns.md" >"$out/cell-patterns-summary.md"
   step "cell patterns on 13 more held-out models and mrfixit" cell-patterns-more.md
@@ -220,14 +216,14 @@ goals_steps() {
   step "RSAA's goals on 13 more held-out models" rsaa-goals-more.md
   bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-more" "${more_models[@]}" >"$out/rsaa-goals-more.md"
   step "RSAA without and with facet edges (--facet-edges off -> defaults): the goals' scenes and held-out models" facet-edges.md
-  bash tools/rsaa_goals.sh --out-dir "$out/facet-edges" --without "--facet-edges off" builtin:default builtin:grazing \
-    builtin:edges builtin:star builtin:fence builtin:distant builtin:interpenetrating builtin:coplanar "$engine" \
-    "$truck" $models/OBJ/spider.obj $models/OBJ/WusonOBJ.obj $models/3DS/fels.3ds $models/Collada/duck.dae \
-    $models/Collada/teapots.DAE $models/MS3D/jeep1.ms3d $models/X3D/ComputerKeyboard.x3d $models/Q3D/E-AT-AT.q3o \
-    $models/COB/dwarf.cob $models/X/BCN_Epileptic.X $models/IFC/AC14-FZK-Haus.ifc $models/COB/molecule.cob \
-    $models/Ogre/TheThing/Mesh.mesh.xml $models/BLEND/HUMAN.blend $models/glTF2/BoxTextured-glTF/BoxTextured.gltf \
+  bash tools/rsaa_goals.sh --out-dir "$out/facet-edges" --without "--facet-edges off" "${goal_scenes[@]}" \
     $models/IQM/mrfixit.iqm "${facet_models[@]}" >"$out/facet-edges.md"
   bash tools/crops.sh "$out/facet-edges/sphereWithHole" 100x75+330+250 docs/images/facet_crops.png \
+    noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
+  step "RSAA without and with borrowed colours (--multi-surface neighbours -> defaults): the same scenes" borrowed-colours.md
+  bash tools/rsaa_goals.sh --out-dir "$out/borrowed-colours" --without "--multi-surface neighbours" "${goal_scenes[@]}" \
+    $models/IQM/mrfixit.iqm "${facet_models[@]}" >"$out/borrowed-colours.md"
+  bash tools/crops.sh "$out/borrowed-colours/AC14-FZK-Haus" 50x60+235+280 docs/images/borrow_crops.png \
     noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
   step "RSAA's goals on 53 surveyed held-out models (--facet-edges off -> defaults)" rsaa-goals-survey.md
   bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-survey" --without "--facet-edges off" "${survey_models[@]}" \
@@ -289,7 +285,7 @@ if [[ $quick == 1 ]]; then
   step "bench --quick" bench/report.md
   $rsaa bench --quick --target-psnr 30 --out-dir "$out/bench" >"$out/bench.md"
   step "bench --growth --quick" growth.md
-  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe" \
+  $rsaa bench --growth --quick --techniques "msaa 4x,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe" \
     --out-dir "$out/growth" >"$out/growth.md"
   papers_figures
   echo "quick figures done in $((SECONDS - started)) s; docs/ untouched" >&2
@@ -318,7 +314,7 @@ bash tools/crops.sh "$out/compare/default" 100x75+250+40 docs/images/default_cro
 bash tools/crops.sh "$out/compare/default" 100x75+331+172 docs/images/default_crops_box.png
 diagnosis_steps
 step "bench, RSAA against its baselines" bench-rsaa.md
-$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 ms sc fc me fe,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 ms sc fc me fe" \
+$rsaa bench --techniques "fxaa,msaa 4x,rsaa 4x gl4x sadp auth0,rsaa 4x gl4x sadp-plane auth1 cap1.5 mb sc fc me fe,rsaa 8x sadp auth0,rsaa 8x sadp-plane auth0,rsaa 8x sadp-plane auth1 cap1.5 mb sc fc me fe" \
   --frames 2 --orbit-frames 2 --out-dir "$out/bench-rsaa" >"$out/bench-rsaa.md"
 goals_steps
 cost_steps

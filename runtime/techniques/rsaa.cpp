@@ -118,8 +118,8 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --threshold must be a finite number >= 0");
   if (!(o.split_cap == 0.0 || (o.split_cap >= 1.0 && std::isfinite(o.split_cap))))
     bad("rsaa --split-cap must be 0 (the paper's split) or a finite number >= 1");
-  if (o.multi_surface != "fetch" && o.multi_surface != "neighbours")
-    bad("rsaa --multi-surface must be fetch or neighbours, not '" + o.multi_surface + "'");
+  if (o.multi_surface != "fetch" && o.multi_surface != "neighbours" && o.multi_surface != "borrow")
+    bad("rsaa --multi-surface must be fetch, neighbours or borrow, not '" + o.multi_surface + "'");
   if (o.split_check != "off" && o.split_check != "neighbours")
     bad("rsaa --split-check must be off or neighbours, not '" + o.split_check + "'");
   if (o.fetch_check != "off" && o.fetch_check != "neighbours")
@@ -138,7 +138,8 @@ void validate_rsaa(const TechniqueOptions& o) {
 std::string rsaa_extension_label(const TechniqueOptions& o) {
   std::ostringstream label;
   if (o.split_cap > 0.0) label << " cap" << o.split_cap;
-  if (o.multi_surface != "fetch") label << " ms";
+  if (o.multi_surface == "neighbours") label << " ms";
+  if (o.multi_surface == "borrow") label << " mb";
   if (o.split_check != "off") label << " sc";
   if (o.fetch_check != "off") label << " fc";
   if (o.material_edges != "off") label << " me";

@@ -95,6 +95,7 @@ std::string host_recipe(const ShadersArgs& a, const SamplePattern& pattern) {
       << "// the frame's colour; an sRGB target with GL_FRAMEBUFFER_SRGB on, so that the linear result is encoded),\n"
       << "// any vertex stage covering the viewport; units 0 colour (bilinear, clamp to edge),\n"
       << "// 1 centre normal, 2 centre depth, 4.. the code textures, " << (s.material_edges ? "8 centre primitive, " : "")
+      << (s.multi_surface == "borrow" && s.prepass != "jittered" ? "10 the sources (the record passes' files), " : "")
       << "all nearest; rsaa_subsample = -1.\n"
       << "// Per subsample: position (pixel space, +y down), rsaa_jitter_ndc, rsaa_neighbours[i]:\n";
   for (int i = 0; i < n; ++i) {
@@ -144,7 +145,9 @@ int run_shaders(ShadersArgs a) {
     // records' units beside the pre-pass's three (as RsaaPass places them), code images from 0,
     // the pixel list at storage binding 0.
     const int record_unit = rsaa_record_first_unit(a.settings.prepass_first_unit);
-    const std::string record_defines = rsaa_record_pass_defines(table.pattern, record_unit, 0, 0);
+    const int code_textures = (n + 3) / 4;
+    const bool borrow = a.settings.multi_surface == "borrow";
+    const std::string record_defines = rsaa_record_pass_defines(table.pattern, record_unit, 0, 0, code_textures);
     const std::string usage =
         "// The record passes of the pre-pass (shaders/rsaa_prepass_records.glsl documents them).\n"
         "// After the pre-pass " + std::string(multisample ? "draw" : "draws") +
@@ -156,7 +159,12 @@ int run_shaders(ShadersArgs a) {
         "// height bytes at storage binding 0 whose first 16 bytes are {0, 1, 1, 0}; set rsaa_rows\n"
         "// (location 0) to (0, height); dispatch rsaa_prepass_list.comp over the image in its work\n"
         "// groups, then rsaa_post_list_size.comp (1 group), then rsaa_prepass_codes.comp indirectly\n"
-        "// from the buffer's first 12 bytes, with memory barriers between (RsaaPass::codes_from_records).\n";
+        "// from the buffer's first 12 bytes, with memory barriers between (RsaaPass::codes_from_records).\n" +
+        (borrow ? "// Borrowed colours: a " + std::string(n <= 4 ? "GL_R32UI" : n <= 8 ? "GL_RG32UI" : "GL_RGBA32UI") +
+                      " texture of the frame's size (the sources), cleared to 0\n// once, as image unit " +
+                      std::to_string(code_textures) +
+                      " (write-only) of rsaa_prepass_codes.comp; the post-process reads it at unit 10.\n"
+                : std::string());
     for (const char* name : kRecordPassFiles)
       files.push_back({a.out_dir + "/" + name, "#version 450 core\n" + header + usage + defines + record_defines +
                                                    rsaa_shader_file(name)});
@@ -222,9 +230,12 @@ Action add_shaders_command(CLI::App& app) {
   cmd->add_option("--split-cap", args->split_cap, "Ours: cap of the k-means split in thresholds (>= 1); 0 = the paper's")
       ->capture_default_str()
       ->check(finite_range(0.0, 1e30));
-  cmd->add_option("--multi-surface", s.multi_surface, "Ours: fetch (the paper) | neighbours (3+ surface pixels)")
+  cmd->add_option("--multi-surface", s.multi_surface,
+                  "Ours: fetch (the paper) | neighbours (3+ surface pixels) | borrow (as neighbours, colours taken from "
+                  "the pixel within two that shows a subsample's surface: with --prepass msaa or records, the GLSL "
+                  "files; as neighbours otherwise and in the HLSL)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"fetch", "neighbours"}));
+      ->check(CLI::IsMember({"fetch", "neighbours", "borrow"}));
   cmd->add_option("--split-check", s.split_check, "Ours: neighbours (subsamples above the threshold) | off (the paper's)")
       ->capture_default_str()
       ->check(CLI::IsMember({"off", "neighbours"}));

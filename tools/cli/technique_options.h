@@ -57,7 +57,10 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
       ->check(finite_range(0.0, 1e30));
   cmd->add_option("--multi-surface", o.multi_surface,
                   "rsaa (ours): fetch (one bilinear fetch, the paper) | neighbours (pixels whose dissimilar "
-                  "subsamples point at two different surfaces: mean over subsamples of the outside pixels' colours)")
+                  "subsamples point at two different surfaces: mean over subsamples of the outside pixels' colours) | "
+                  "borrow (as neighbours, each dissimilar subsample's colour taken from the pixel within two whose "
+                  "centre shows its surface, also where only a pixel beyond the 3x3 does; needs a pre-pass writing "
+                  "records, as neighbours with the jittered one)")
       ->capture_default_str();
   cmd->add_option("--split-check", o.split_check,
                   "rsaa (ours): neighbours (a subsample above the threshold that the split calls similar is "
