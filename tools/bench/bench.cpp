@@ -100,6 +100,10 @@ std::vector<TechniqueOptions> default_techniques() {
   // The defaults without facet edges (ours, a default since session 26: facets parted by shading
   // creases, and flat surfaces, differ by material).
   rsaa_with(8, [](TechniqueOptions& o) { o.facet_edges = "off"; });
+  // The defaults without borrowed colours (ours, a default since session 30: a dissimilar
+  // subsample's colour from the pixel within two that shows its surface), RSAA 8x and 4x.
+  rsaa_with(8, [](TechniqueOptions& o) { o.multi_surface = "neighbours"; });
+  rsaa_with(4, [](TechniqueOptions& o) { o.multi_surface = "neighbours"; });
   return list;
 }
 
