@@ -27,7 +27,8 @@ void main() {
   // A surface pixel with a sample on the background is an edge: the codes pass finds its sources.
   bool uncovered = false;
   for (int i = 0; i < RSAA_SAMPLE_COUNT; ++i) uncovered = uncovered || codes[i] == 0u;
-  if (!listed && uncovered) listed = rsaa_is_surface(texelFetch(rsaa_centre_normal, pixel, 0).xy);
+  // (The background's primitive is 0: most background pixels skip the normal's read.)
+  if (!listed && uncovered && centre_surface != 0u) listed = rsaa_is_surface(texelFetch(rsaa_centre_normal, pixel, 0).xy);
 #endif
   rsaa_store_codes(pixel, codes);
   if (!listed) {  // these codes are final (0 or 1)

@@ -175,7 +175,7 @@ const int RSAA_BORROW_RADIUS = 2;  // the window searched: 5 x 5 pixels
 #define RSAA_BORROW_OUTSIDE_IMAGE 0xffffffffu
 
 // The centres of the window around `pixel`, read once for all its subsamples: row-major from the
-// lower-left (window space), rsaa_centre_record_surface() of a surface, 0 of the background,
+// lower-left (window space), rsaa_centre_record_surface() (0: the background, primitive 0),
 // RSAA_BORROW_OUTSIDE_IMAGE beyond the image.
 void rsaa_borrow_window(ivec2 pixel, out uint keys[RSAA_BORROW_WINDOW]) {
   ivec2 last = ivec2(rsaa_viewport) - 1;
@@ -183,9 +183,8 @@ void rsaa_borrow_window(ivec2 pixel, out uint keys[RSAA_BORROW_WINDOW]) {
     ivec2 q = pixel + ivec2(k % 5, k / 5) - RSAA_BORROW_RADIUS;
     keys[k] = RSAA_BORROW_OUTSIDE_IMAGE;
     if (any(lessThan(q, ivec2(0))) || any(greaterThan(q, last))) continue;
-    keys[k] = rsaa_is_surface(texelFetch(rsaa_centre_normal, q, 0).xy)
-                  ? rsaa_centre_record_surface(texelFetch(rsaa_centre_primitive, q, 0).xy)
-                  : 0u;
+    // (The background's primitive is 0, as the engine writes it: one read a pixel.)
+    keys[k] = rsaa_centre_record_surface(texelFetch(rsaa_centre_primitive, q, 0).xy);
   }
 }
 
