@@ -142,12 +142,14 @@ constexpr int kRecordImages = 2;
 // The codes pass's image unit for the sources it writes (borrowed colours): one the record passes
 // leave free (the post-process's output unit).
 constexpr int kSourcesImageUnit = 0;
-// The sources' format: a byte a subsample, four to a channel.
+// The sources' format (rsaa_sources_channels() 32-bit channels).
 GLenum sources_format(int sample_count) {
-  return sample_count <= 4 ? GL_R32UI : sample_count <= 8 ? GL_RG32UI : GL_RGBA32UI;
+  const GLenum formats[] = {GL_R32UI, GL_RG32UI, 0, GL_RGBA32UI};
+  return formats[rsaa_sources_channels(sample_count) - 1];
 }
 const char* sources_image_format(int sample_count) {
-  return sample_count <= 4 ? "r32ui" : sample_count <= 8 ? "rg32ui" : "rgba32ui";
+  const char* formats[] = {"r32ui", "rg32ui", "", "rgba32ui"};
+  return formats[rsaa_sources_channels(sample_count) - 1];
 }
 // What the pre-passes that write records keep per subsample and pixel: a surface record (RG32UI)
 // and a 32-bit depth.
@@ -584,6 +586,8 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
 
 std::string rsaa_shader_file(const std::string& name) { return gl::shader_source(name); }
 
+int rsaa_sources_channels(int sample_count) { return sample_count <= 4 ? 1 : sample_count <= 8 ? 2 : 4; }
+
 int rsaa_record_first_unit(int prepass_first_unit) {
   constexpr int kRecordUnits = 4;  // records and depths of each of a union pattern's two draws
   return prepass_first_unit >= kRecordUnits ? 0 : prepass_first_unit + 3;
@@ -828,7 +832,7 @@ double RsaaPass::bytes_per_pixel(bool resolves_in_place) const {
     bytes += n * kRecordBytesPerSubsample;  // (both draws of a union)
   else
     bytes += cull_ ? 8.0 : 4.0;  // the draws' depth (+ stencil)
-  if (borrows()) bytes += n <= 4 ? 4.0 : n <= 8 ? 8.0 : 16.0;  // the sources (sources_format)
+  if (borrows()) bytes += 4.0 * rsaa_sources_channels(n);  // the sources
   if (settings_.post == "edges") bytes += 2.0;  // the 16-bit depth the edge pass marks
   const int lists = (settings_.post == "compute" ? 1 : 0) + (writes_records() ? 1 : 0);  // (edges, pixels to code)
   bytes += lists * double(kListHeadBytes + 4 * list_capacity_) / (double(width_) * height_);

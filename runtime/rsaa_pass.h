@@ -300,6 +300,9 @@ int rsaa_record_first_unit(int prepass_first_unit);
 // RSAA_POST_FIRST_UNIT + 10) and where each subsample's point lies in its pixel. Needs no GL.
 std::string rsaa_record_pass_defines(const SamplePattern& pattern, int first_record_unit, int first_code_image,
                                      int list_binding, int sources_image = 0);
+// Borrowed colours' sources texture: a byte a subsample, four to a 32-bit channel, so 1, 2 or 4
+// channels (GL_R32UI, GL_RG32UI, GL_RGBA32UI: no three-channel image format) for `sample_count`.
+int rsaa_sources_channels(int sample_count);
 // A file of shaders/ ("rsaa_prepass.glsl", "rsaa_post.glsl", "rsaa_post.hlsl", ...) with its
 // #include lines replaced by the included text: one self-contained text. Needs no GL.
 std::string rsaa_shader_file(const std::string& name);

@@ -110,6 +110,9 @@ std::string host_recipe(const ShadersArgs& a, const SamplePattern& pattern) {
   return out.str();
 }
 
+// Borrowed colours' sources texture by rsaa_sources_channels().
+constexpr const char* kSourcesFormats[] = {"GL_R32UI", "GL_RG32UI", "", "GL_RGBA32UI"};
+
 int run_shaders(ShadersArgs a) {
   a.settings.material_edges = a.material_edges == "on";
   // As RsaaPass and `rsaa render` take it: 0 or at least 1 (1e-320 would round to the paper's 0,
@@ -160,7 +163,7 @@ int run_shaders(ShadersArgs a) {
         "// (location 0) to (0, height); dispatch rsaa_prepass_list.comp over the image in its work\n"
         "// groups, then rsaa_post_list_size.comp (1 group), then rsaa_prepass_codes.comp indirectly\n"
         "// from the buffer's first 12 bytes, with memory barriers between (RsaaPass::codes_from_records).\n" +
-        (borrow ? "// Borrowed colours: a " + std::string(n <= 4 ? "GL_R32UI" : n <= 8 ? "GL_RG32UI" : "GL_RGBA32UI") +
+        (borrow ? "// Borrowed colours: a " + std::string(kSourcesFormats[rsaa_sources_channels(n) - 1]) +
                       " texture of the frame's size (the sources), cleared to 0\n// once, as image unit " +
                       std::to_string(code_textures) +
                       " (write-only) of rsaa_prepass_codes.comp; the post-process reads it at unit 10.\n"
