@@ -91,6 +91,15 @@ struct RsaaPass::Objects {
 
 namespace {
 
+// A float as a GLSL literal that reads back the same value ("1.5", "1.0", "7.5e-05").
+std::string glsl_float(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", double(value));
+  std::string literal = text;
+  if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+  return literal;
+}
+
 // shaders/rsaa_uniforms.glsl's block, std140: a mat4, two vec2, a float and an int, padding to
 // 16 bytes, then one ivec4 per subsample.
 struct RsaaUniformHead {
@@ -557,6 +566,8 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
   if (settings.multi_surface != "fetch" && settings.multi_surface != "neighbours" && settings.multi_surface != "borrow")
     throw std::invalid_argument("RSAA multi_surface must be fetch, neighbours or borrow, not '" + settings.multi_surface +
                                 "'");
+  if (!(settings.borrow_weight >= 0.0f && settings.borrow_weight <= 1.0f))
+    throw std::invalid_argument("RSAA borrow_weight must be a number in [0, 1]");
   if (settings.split_check != "off" && settings.split_check != "neighbours")
     throw std::invalid_argument("RSAA split_check must be off or neighbours, not '" + settings.split_check + "'");
   if (settings.fetch_check != "off" && settings.fetch_check != "neighbours")
@@ -564,19 +575,14 @@ std::string rsaa_shader_defines(const RsaaSettings& settings, int sample_count, 
   if (settings.depth != "gl" && settings.depth != "zero-to-one" && settings.depth != "reverse-z")
     throw std::invalid_argument("RSAA depth must be gl, zero-to-one or reverse-z, not '" + settings.depth + "'");
   if (zero_to_one(settings)) defines += "#define RSAA_DEPTH_ZERO_TO_ONE\n";
-  if (settings.split_cap > 0.0f) {
-    char cap[64];
-    std::snprintf(cap, sizeof cap, "%.9g", double(settings.split_cap));
-    std::string literal = cap;
-    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
-    defines += "#define RSAA_SPLIT_CAP " + literal + "\n";
-  }
+  if (settings.split_cap > 0.0f) defines += "#define RSAA_SPLIT_CAP " + glsl_float(settings.split_cap) + "\n";
   if (settings.multi_surface != "fetch") defines += "#define RSAA_MULTI_SURFACE_NEIGHBOURS\n";
   // Borrowed colours need the subsamples' surfaces, which only the pre-passes writing records keep:
   // with the jittered pre-pass "borrow" resolves as "neighbours".
   if (settings.multi_surface == "borrow" && (multisample_prepass || settings.prepass == "records"))
     defines += std::string("#define RSAA_MULTI_SURFACE_BORROW\n#define RSAA_SOURCES_FORMAT ") +
-               sources_image_format(sample_count) + "\n";
+               sources_image_format(sample_count) + "\n#define RSAA_BORROW_WEIGHT " +
+               glsl_float(settings.borrow_weight) + "\n";
   if (settings.split_check == "neighbours") defines += "#define RSAA_SPLIT_CHECK_NEIGHBOURS\n";
   if (settings.fetch_check == "neighbours") defines += "#define RSAA_FETCH_CHECK_NEIGHBOURS\n";
   if (settings.material_edges) defines += "#define RSAA_MATERIAL_EDGES\n";

@@ -28,6 +28,7 @@ struct TechniqueOptions {
   std::string prepass_cull = "off";  // rsaa: off | neighbours (RsaaSettings::prepass_cull)
   double split_cap = 1.5;            // rsaa: 0 the paper's k-means split, else capped (RsaaSettings::split_cap)
   std::string multi_surface = "borrow";  // rsaa: borrow (default) | neighbours | fetch (the paper's)
+  double borrow_weight = 0.75;       // rsaa: with borrow, the mean's share where only a far source calls for it
   std::string split_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string fetch_check = "neighbours";    // rsaa: neighbours (default) | off (the paper's)
   std::string material_edges = "on";         // rsaa: on (default: the renderer knows each draw's

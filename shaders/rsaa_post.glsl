@@ -231,6 +231,9 @@ bool rsaa_centres_differ(ivec2 pixel, uvec2 normal, ivec2 other, uvec2 other_nor
 // subsample i's, 0 for none, else 1 + (dy + 2) * 5 + (dx + 2) for the pixel (dx, dy) away (window
 // space) whose centre shows the subsample's surface.
 layout(binding = RSAA_POST_FIRST_UNIT + 10) uniform usampler2D rsaa_post_sources;
+#ifndef RSAA_BORROW_WEIGHT
+#define RSAA_BORROW_WEIGHT 0.75  // RsaaSettings::borrow_weight's default
+#endif
 
 // Borrowed colours (ours, RsaaSettings::multi_surface = "borrow"): the mean over the subsamples,
 // a similar one taking the centre's colour and a dissimilar one the colour of the pixel the record
@@ -238,10 +241,15 @@ layout(binding = RSAA_POST_FIRST_UNIT + 10) uniform usampler2D rsaa_post_sources
 // than the centre, else the centre's), where one such pixel lies beyond the 3x3 (a sliver whose
 // surface the neighbours do not show: a thin bar, a wire crossing between pixel centres) or the
 // pixel holds 3+ surfaces (`three`, as rsaa_multi_surface() tells it). `outside`: the dissimilar
-// subsamples whose outside pixel shows another surface than the centre. Returns false (the
-// caller fetches as usual) for every other pixel.
-bool rsaa_borrow(ivec2 pixel, vec4 colour, uint mask, bool three, uint outside, RsaaOutside o, out vec4 resolved) {
+// subsamples whose outside pixel shows another surface than the centre. `weight`: the mean's share
+// against the table's fetch, 1 with 3+ surfaces, else RSAA_BORROW_WEIGHT (RsaaSettings::
+// borrow_weight: beyond the 3x3 is as often another triangle of a plain edge's surface, whose
+// coverage the fetch estimates better than a mean of few subsamples). Returns false (the caller
+// fetches as usual) for every other pixel.
+bool rsaa_borrow(ivec2 pixel, vec4 colour, uint mask, bool three, uint outside, RsaaOutside o, out vec4 resolved,
+                 out float weight) {
   resolved = colour;
+  weight = three ? 1.0 : RSAA_BORROW_WEIGHT;
   uvec4 sources = texelFetch(rsaa_post_sources, pixel, 0);
   ivec2 last = ivec2(rsaa_viewport) - 1;
   ivec2 source[RSAA_SAMPLE_COUNT];
@@ -276,9 +284,12 @@ bool rsaa_borrow(ivec2 pixel, vec4 colour, uint mask, bool three, uint outside, 
 // the centre's and from each other, the pixel holds 3+ surfaces: it is resolved as the mean over
 // its subsamples instead, a similar subsample taking the centre's colour and a dissimilar one
 // the colour of its outside pixel (the centre's when that pixel shows the centre's surface).
-// Returns false (the caller fetches as usual) for every other pixel.
-bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, RsaaOutside o, out vec4 resolved) {
+// Returns false (the caller fetches as usual) for every other pixel. `weight`: the share of
+// `resolved` against the table's fetch (1: `resolved` alone; below only with borrowed colours).
+bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, RsaaOutside o, out vec4 resolved,
+                        out float weight) {
   resolved = colour;
+  weight = 1.0;
   // A non-finite pixel is left to the fetch path, which keeps it (as the CPU reference).
   if (any(isnan(colour)) || any(isinf(colour))) return false;
   // Dissimilar subsamples whose outside pixel shows another surface than the centre; the first
@@ -292,7 +303,7 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
     if (differs && first < 0) first = i;
   }
 #ifdef RSAA_MULTI_SURFACE_BORROW
-  if (first < 0) return rsaa_borrow(pixel, colour, mask, false, outside, o, resolved);
+  if (first < 0) return rsaa_borrow(pixel, colour, mask, false, outside, o, resolved, weight);
 #else
   if (first < 0) return false;
 #endif
@@ -310,7 +321,7 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
     three = three || rsaa_centres_differ(first_pixel, first_normal, o.pixel[i], o.normal[i], t);
   }
 #ifdef RSAA_MULTI_SURFACE_BORROW
-  return rsaa_borrow(pixel, colour, mask, three, outside, o, resolved);
+  return rsaa_borrow(pixel, colour, mask, three, outside, o, resolved, weight);
 #else
   if (!three) return false;
   // The mean over the subsamples: a similar one takes the centre's colour, a dissimilar one the
@@ -416,8 +427,11 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
 #endif
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
-  vec4 resolved;
-  if (offset != vec2(0.0) && rsaa_multi_surface(pixel, centre_normal, colour, mask, o, resolved)) return resolved;
+  vec4 mean;
+  float mean_weight;  // the share of `mean` in the result, the rest the fetch's
+  if (!(offset != vec2(0.0) && rsaa_multi_surface(pixel, centre_normal, colour, mask, o, mean, mean_weight)))
+    mean_weight = 0.0;
+  if (mean_weight >= 1.0) return mean;
 #endif
 #if RSAA_AUTH == 1
   // Post-pass authentication (paper section 2.4): if the outside pixel nearest to the
@@ -434,7 +448,11 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
   // to the minification filter where neighbouring pixels' offsets differ.
   vec4 fetched = textureLod(rsaa_colour, (vec2(pixel) + 0.5 + offset) / rsaa_viewport, 0.0);
   // As the CPU reference: a NaN or infinite neighbour never spreads into this pixel.
-  return any(isnan(fetched)) || any(isinf(fetched)) ? colour : fetched;
+  if (any(isnan(fetched)) || any(isinf(fetched))) fetched = colour;
+#ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
+  if (mean_weight > 0.0) fetched = mix(fetched, mean, mean_weight);
+#endif
+  return fetched;
 }
 
 #endif  // RSAA_POST_GLSL

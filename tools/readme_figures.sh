@@ -225,6 +225,9 @@ goals_steps() {
     $models/IQM/mrfixit.iqm "${facet_models[@]}" >"$out/borrowed-colours.md"
   bash tools/crops.sh "$out/borrowed-colours/AC14-FZK-Haus" 50x60+235+280 docs/images/borrow_crops.png \
     noaa rsaasamples8-without rsaasamples8 msaasamples4 reference
+  step "borrowed colours: the mean alone -> the mean blended with the fetch where only a far source calls for it (--borrow-weight 1 -> defaults)" borrow-weight.md
+  bash tools/rsaa_goals.sh --out-dir "$out/borrow-weight" --without "--borrow-weight 1" "${goal_scenes[@]}" \
+    $models/IQM/mrfixit.iqm "${facet_models[@]}" >"$out/borrow-weight.md"
   step "RSAA's goals on 53 surveyed held-out models (--facet-edges off -> defaults)" rsaa-goals-survey.md
   bash tools/rsaa_goals.sh --out-dir "$out/rsaa-goals-survey" --without "--facet-edges off" "${survey_models[@]}" \
     >"$out/rsaa-goals-survey.md"

@@ -83,6 +83,7 @@ RsaaSettings rsaa_settings(const TechniqueOptions& o) {
   s.prepass_cull = o.prepass_cull;
   s.split_cap = float(o.split_cap);
   s.multi_surface = o.multi_surface;
+  s.borrow_weight = float(o.borrow_weight);
   s.split_check = o.split_check;
   s.fetch_check = o.fetch_check;
   s.material_edges = o.material_edges == "on";
@@ -120,6 +121,10 @@ void validate_rsaa(const TechniqueOptions& o) {
     bad("rsaa --split-cap must be 0 (the paper's split) or a finite number >= 1");
   if (o.multi_surface != "fetch" && o.multi_surface != "neighbours" && o.multi_surface != "borrow")
     bad("rsaa --multi-surface must be fetch, neighbours or borrow, not '" + o.multi_surface + "'");
+  if (!(o.borrow_weight >= 0.0 && o.borrow_weight <= 1.0))
+    bad("rsaa --borrow-weight must be a number in [0, 1]");
+  if (o.borrow_weight != TechniqueOptions{}.borrow_weight && o.multi_surface != "borrow")
+    bad("rsaa --borrow-weight needs --multi-surface borrow");
   if (o.split_check != "off" && o.split_check != "neighbours")
     bad("rsaa --split-check must be off or neighbours, not '" + o.split_check + "'");
   if (o.fetch_check != "off" && o.fetch_check != "neighbours")
@@ -140,6 +145,7 @@ std::string rsaa_extension_label(const TechniqueOptions& o) {
   if (o.split_cap > 0.0) label << " cap" << o.split_cap;
   if (o.multi_surface == "neighbours") label << " ms";
   if (o.multi_surface == "borrow") label << " mb";
+  if (o.multi_surface == "borrow" && o.borrow_weight != TechniqueOptions{}.borrow_weight) label << o.borrow_weight;
   if (o.split_check != "off") label << " sc";
   if (o.fetch_check != "off") label << " fc";
   if (o.material_edges != "off") label << " me";

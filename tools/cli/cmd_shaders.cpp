@@ -35,7 +35,7 @@ struct ShadersArgs {
   RsaaSettings settings;
 };
 
-std::string cap_text(float cap) {
+std::string number_text(float cap) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", double(cap));
   return text;
@@ -47,8 +47,9 @@ std::string command_line(const ShadersArgs& a) {
   const RsaaSettings& s = a.settings;
   return "rsaa shaders " + (a.table.empty() ? "--pattern " + a.pattern : "--table " + shell_quoted(a.table)) +
          " --similarity " + s.similarity + " --auth " + std::to_string(s.auth) + " --code-bits " +
-         std::to_string(s.code_bits) + " --split-cap " + cap_text(s.split_cap) + " --multi-surface " +
-         s.multi_surface + " --split-check " + s.split_check + " --fetch-check " + s.fetch_check +
+         std::to_string(s.code_bits) + " --split-cap " + number_text(s.split_cap) + " --multi-surface " +
+         s.multi_surface + (s.multi_surface == "borrow" ? " --borrow-weight " + number_text(s.borrow_weight) : "") +
+         " --split-check " + s.split_check + " --fetch-check " + s.fetch_check +
          " --material-edges " + (s.material_edges ? "on" : "off") + " --depth " + s.depth + " --prepass " +
          s.prepass + " --first-unit " + std::to_string(s.prepass_first_unit) + " --uniform-binding " +
          std::to_string(s.uniform_binding);
@@ -120,6 +121,8 @@ int run_shaders(ShadersArgs a) {
   if (!(a.split_cap == 0.0 || (a.split_cap >= 1.0 && std::isfinite(a.split_cap))))
     throw std::invalid_argument("--split-cap must be 0 (the paper's split) or a finite number >= 1");
   a.settings.split_cap = float(a.split_cap);
+  if (a.settings.borrow_weight != RsaaSettings{}.borrow_weight && a.settings.multi_surface != "borrow")
+    throw std::invalid_argument("--borrow-weight needs --multi-surface borrow");
   const OffsetTable table = a.table.empty() ? gl::builtin_offset_table(a.pattern) : read_offset_table(a.table);
   const int n = table.pattern.size();
   const bool multisample = a.settings.prepass == "msaa";
@@ -239,6 +242,11 @@ Action add_shaders_command(CLI::App& app) {
                   "files; as neighbours otherwise and in the HLSL)")
       ->capture_default_str()
       ->check(CLI::IsMember({"fetch", "neighbours", "borrow"}));
+  cmd->add_option("--borrow-weight", s.borrow_weight,
+                  "Ours, with borrow: the mean's share where only a source beyond the 3x3 calls for it, the rest the "
+                  "table's fetch; 1 = the mean alone")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--split-check", s.split_check, "Ours: neighbours (subsamples above the threshold) | off (the paper's)")
       ->capture_default_str()
       ->check(CLI::IsMember({"off", "neighbours"}));

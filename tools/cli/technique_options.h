@@ -62,6 +62,11 @@ inline void add_technique_options(CLI::App* cmd, TechniqueOptions& o) {
                   "centre shows its surface, also where only a pixel beyond the 3x3 does; needs a pre-pass writing "
                   "records, as neighbours with the jittered one)")
       ->capture_default_str();
+  cmd->add_option("--borrow-weight", o.borrow_weight,
+                  "rsaa (ours): with --multi-surface borrow, the share of the subsamples' mean where only a source "
+                  "beyond the 3x3 calls for it (no 3+ surfaces), the rest the table's fetch; 1 = the mean alone")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--split-check", o.split_check,
                   "rsaa (ours): neighbours (a subsample above the threshold that the split calls similar is "
                   "dissimilar when the outside pixel in its direction shows a surface about as different) | "
