@@ -244,12 +244,12 @@ layout(binding = RSAA_POST_FIRST_UNIT + 10) uniform usampler2D rsaa_post_sources
 // subsamples whose outside pixel shows another surface than the centre. `weight`: the mean's share
 // against the table's fetch, 1 with 3+ surfaces, else RSAA_BORROW_WEIGHT (RsaaSettings::
 // borrow_weight: beyond the 3x3 is as often another triangle of a plain edge's surface, whose
-// coverage the fetch estimates better than a mean of few subsamples). Returns false (the caller
-// fetches as usual) for every other pixel.
+// coverage the fetch estimates better than a mean of few subsamples). Returns false and weight 0
+// (the caller fetches as usual) for every other pixel.
 bool rsaa_borrow(ivec2 pixel, vec4 colour, uint mask, bool three, uint outside, RsaaOutside o, out vec4 resolved,
                  out float weight) {
   resolved = colour;
-  weight = three ? 1.0 : RSAA_BORROW_WEIGHT;
+  weight = 0.0;
   uvec4 sources = texelFetch(rsaa_post_sources, pixel, 0);
   ivec2 last = ivec2(rsaa_viewport) - 1;
   ivec2 source[RSAA_SAMPLE_COUNT];
@@ -274,6 +274,7 @@ bool rsaa_borrow(ivec2 pixel, vec4 colour, uint mask, bool three, uint outside, 
     sum += !any(isnan(fetched)) && !any(isinf(fetched)) ? fetched : colour.rgb;
   }
   resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
+  weight = three ? 1.0 : RSAA_BORROW_WEIGHT;
   return true;
 }
 #endif
@@ -284,12 +285,13 @@ bool rsaa_borrow(ivec2 pixel, vec4 colour, uint mask, bool three, uint outside, 
 // the centre's and from each other, the pixel holds 3+ surfaces: it is resolved as the mean over
 // its subsamples instead, a similar subsample taking the centre's colour and a dissimilar one
 // the colour of its outside pixel (the centre's when that pixel shows the centre's surface).
-// Returns false (the caller fetches as usual) for every other pixel. `weight`: the share of
-// `resolved` against the table's fetch (1: `resolved` alone; below only with borrowed colours).
+// Returns false and weight 0 (the caller fetches as usual) for every other pixel. `weight`: the
+// share of `resolved` against the table's fetch (1: `resolved` alone; below only with borrowed
+// colours).
 bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask, RsaaOutside o, out vec4 resolved,
                         out float weight) {
   resolved = colour;
-  weight = 1.0;
+  weight = 0.0;
   // A non-finite pixel is left to the fetch path, which keeps it (as the CPU reference).
   if (any(isnan(colour)) || any(isinf(colour))) return false;
   // Dissimilar subsamples whose outside pixel shows another surface than the centre; the first
@@ -340,6 +342,7 @@ bool rsaa_multi_surface(ivec2 pixel, uvec2 centre_normal, vec4 colour, uint mask
   }
   for (; next < RSAA_SAMPLE_COUNT; ++next) sum += colour.rgb;
   resolved = vec4(sum / float(RSAA_SAMPLE_COUNT), colour.a);
+  weight = 1.0;
   return true;
 #endif
 }
@@ -428,9 +431,8 @@ vec4 rsaa_resolve(ivec2 pixel, out uint mask) {
 #ifdef RSAA_MULTI_SURFACE_NEIGHBOURS
   // A mask the table leaves alone (offset 0, as every mask of an all-zero table) stays alone.
   vec4 mean;
-  float mean_weight;  // the share of `mean` in the result, the rest the fetch's
-  if (!(offset != vec2(0.0) && rsaa_multi_surface(pixel, centre_normal, colour, mask, o, mean, mean_weight)))
-    mean_weight = 0.0;
+  float mean_weight = 0.0;  // the share of `mean` in the result, the rest the fetch's
+  if (offset != vec2(0.0)) rsaa_multi_surface(pixel, centre_normal, colour, mask, o, mean, mean_weight);
   if (mean_weight >= 1.0) return mean;
 #endif
 #if RSAA_AUTH == 1

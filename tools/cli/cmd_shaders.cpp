@@ -3,6 +3,7 @@
 // without an include mechanism (SMAA-style: generate once, copy into the engine).
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -35,9 +36,14 @@ struct ShadersArgs {
   RsaaSettings settings;
 };
 
-std::string number_text(float cap) {
+// The shortest text that reads back as the same float ("1.5", "0.1", "0.123456789"), so that the
+// header's command line makes the same files: %g's six digits would round a longer option away.
+std::string number_text(float value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%g", double(cap));
+  for (int digits = 6; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, double(value));
+    if (std::strtof(text, nullptr) == value) break;
+  }
   return text;
 }
 
